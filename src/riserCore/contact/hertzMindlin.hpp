@@ -1,0 +1,162 @@
+// riserCore: Hertz–Mindlin soft-sphere contact between a sphere and a wall of
+// infinite radius and mass (Wei et al., Phys. Fluids 35, 113311, 2023, sec.
+// II C; Tsuji et al., Powder Technol. 71, 239, 1992; Mindlin 1949).
+//
+//   E_eq = [ (1 - nu_p^2)/E_p + (1 - nu_w^2)/E_w ]^-1
+//   G_eq = [ 2(2 + nu_p - nu_p^2)/E_p + 2(2 + nu_w - nu_w^2)/E_w ]^-1
+//   R_eq = R_p,  M_eq = m_p                         (wall: infinite R and m)
+//   k_n  = 4/3 E_eq sqrt(R_eq),   eta_n = alpha_n sqrt(k_n M_eq) delta_n^(1/4)
+//   F_n  = -( k_n delta_n^(3/2) + eta_n (U . n) ) n
+//   k_t  = 8 G_eq sqrt(R_eq delta_n),   eta_t = 2 zeta_t sqrt(k_t M_eq)
+//   F_t  = -k_t delta_t - eta_t U_t      while k_t |delta_t| <= mu_c |F_n|
+//        = -mu_c |F_n| delta_t/|delta_t| otherwise (sliding: delta_t is reset
+//          to the length mu_c |F_n| / k_t, so the spring holds the limit)
+//
+// n: unit normal from the particle centre towards the wall; delta_n >= 0 the
+// overlap; U the velocity of the contact point relative to the wall, U_t its
+// tangential part; delta_t the tangential spring (the caller accumulates U_t
+// over the contact and keeps it in the current tangent plane).
+//
+// Damping: alpha_n from the normal restitution e_n by dampingRatio() in
+// restitution.hpp (closed form when the dashpot may pull, calibrated when
+// the normal force is clipped at zero). The tangential spring is linear at
+// a given overlap, so its damping ratio zeta_t comes from the tangential
+// restitution e_t by the linear-oscillator relation
+// zeta_t = -ln e_t / sqrt(pi^2 + ln^2 e_t).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef RISERCORE_CONTACT_HERTZMINDLIN_HPP
+#define RISERCORE_CONTACT_HERTZMINDLIN_HPP
+
+#include "restitution.hpp"
+
+#include "../vector.hpp"
+
+#include <cmath>
+
+namespace riser {
+
+//- Isotropic linear-elastic material.
+struct ElasticMaterial
+{
+    double E;   //!< Young's modulus [Pa]
+    double nu;  //!< Poisson ratio [-]
+
+    ElasticMaterial(double youngModulus, double poissonRatio)
+    :
+        E(youngModulus), nu(poissonRatio)
+    {
+        requirePositive("riser::ElasticMaterial", "E", E);
+        requireInRange("riser::ElasticMaterial", "nu", nu, -1.0, Bound::open, 0.5, Bound::open);
+    }
+};
+
+inline double equivalentYoungModulus(const ElasticMaterial& p, const ElasticMaterial& w)
+{
+    return 1.0/((1.0 - p.nu*p.nu)/p.E + (1.0 - w.nu*w.nu)/w.E);
+}
+
+inline double equivalentShearModulus(const ElasticMaterial& p, const ElasticMaterial& w)
+{
+    return 1.0/(2.0*(2.0 + p.nu - p.nu*p.nu)/p.E + 2.0*(2.0 + w.nu - w.nu*w.nu)/w.E);
+}
+
+//- Linear-oscillator damping ratio for restitution e in (0, 1].
+inline double linearDampingRatio(double e)
+{
+    requireInRange("riser::linearDampingRatio", "e", e, 0.0, Bound::open, 1.0, Bound::closed);
+    const double l = std::log(e);
+    return -l/std::sqrt(M_PI*M_PI + l*l);
+}
+
+//- Everything the contact law needs, in SI units.
+struct HertzMindlinParameters
+{
+    ElasticMaterial particle;
+    ElasticMaterial wall;
+    double radius;          //!< particle radius R_p [m]
+    double mass;            //!< particle mass m_p [kg]
+    double normalRestitution;      //!< e_n in (0, 1]
+    double tangentialRestitution;  //!< e_t in (0, 1]
+    double friction;        //!< Coulomb coefficient mu_c >= 0
+    NormalForceFloor floor = NormalForceFloor::tensionAllowed;
+};
+
+//- Contact force on the particle and the tangential spring to keep.
+struct ContactForce
+{
+    Vector normal;          //!< F_n [N]
+    Vector tangential;      //!< F_t [N]
+    Vector springAfter;     //!< delta_t after the Coulomb cap [m]
+    bool sliding;
+};
+
+class HertzMindlin
+{
+public:
+    explicit HertzMindlin(const HertzMindlinParameters& p)
+    :
+        Eeq_(riser::equivalentYoungModulus(p.particle, p.wall)),
+        Geq_(riser::equivalentShearModulus(p.particle, p.wall)),
+        Req_(p.radius),
+        Meq_(p.mass),
+        alphaN_(dampingRatio(p.normalRestitution, p.floor)),
+        zetaT_(linearDampingRatio(p.tangentialRestitution)),
+        friction_(p.friction),
+        floor_(p.floor)
+    {
+        requirePositive("riser::HertzMindlin", "R_p", p.radius);
+        requirePositive("riser::HertzMindlin", "m_p", p.mass);
+        requireNonNegative("riser::HertzMindlin", "mu_c", p.friction);
+        kn_ = 4.0/3.0*Eeq_*std::sqrt(Req_);
+    }
+
+    double equivalentYoungModulus() const { return Eeq_; }
+    double equivalentShearModulus() const { return Geq_; }
+    double normalStiffness() const { return kn_; }
+    double normalDampingRatio() const { return alphaN_; }
+
+    //- Force for overlap deltaN >= 0 along unit normal n, contact-point
+    //  velocity U relative to the wall, and tangential spring deltaT.
+    ContactForce force(double deltaN, const Vector& n, const Vector& U,
+                       const Vector& deltaT) const
+    {
+        ContactForce c{Vector::Zero(), Vector::Zero(), Vector::Zero(), false};
+        if (deltaN <= 0.0) return c;
+
+        const double Un = U.dot(n);
+        const double sqrtDelta = std::sqrt(deltaN);
+        double fn = kn_*deltaN*sqrtDelta
+                  + alphaN_*std::sqrt(kn_*Meq_)*std::sqrt(sqrtDelta)*Un;
+        if (floor_ == NormalForceFloor::noTension && fn < 0.0) fn = 0.0;
+        c.normal = -fn*n;
+
+        const Vector Ut = U - Un*n;
+        const double kt = 8.0*Geq_*std::sqrt(Req_*deltaN);
+        const double etaT = 2.0*zetaT_*std::sqrt(kt*Meq_);
+        const double limit = friction_*std::abs(fn);
+        const double spring = kt*deltaT.norm();
+        if (spring <= limit)
+        {
+            c.tangential = -kt*deltaT - etaT*Ut;
+            c.springAfter = deltaT;
+        }
+        else
+        {
+            const Vector dir = deltaT/deltaT.norm();
+            c.tangential = -limit*dir;
+            c.springAfter = (limit/kt)*dir;
+            c.sliding = true;
+        }
+        return c;
+    }
+
+private:
+    double Eeq_, Geq_, Req_, Meq_, alphaN_, zetaT_, friction_;
+    NormalForceFloor floor_;
+    double kn_;
+};
+
+} // namespace riser
+
+#endif

@@ -1,0 +1,20 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+
+Description
+    Registers the riser particle forces for the stock colliding cloud
+    basicKinematicCollidingCloud, so that icoUncoupledKinematicParcelFoam,
+    icoUncoupledKinematicParcelDyMFoam and DPMFoam find them after
+    libs ("libriserLagrangian.so"); in constant/<cloud>Properties.
+
+\*---------------------------------------------------------------------------*/
+
+#include "basicKinematicCollidingCloud.H"
+#include "WallCorrectedDragForce.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+makeParticleForceModelType(WallCorrectedDragForce, basicKinematicCollidingCloud);
+
+// ************************************************************************* //

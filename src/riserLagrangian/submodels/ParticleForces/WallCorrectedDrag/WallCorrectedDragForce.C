@@ -1,0 +1,92 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "WallCorrectedDragForce.H"
+#include "checkedEntry.H"
+
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+const riser::WallFactors&
+Foam::WallCorrectedDragForce<CloudType>::wallFactors(const scalar d) const
+{
+    if (d != lastDiameter_)
+    {
+        if (!(d > 0 && d < pipeDiameter_))
+        {
+            FatalErrorInFunction
+                << "particle diameter " << d << " outside (0, pipeDiameter = "
+                << pipeDiameter_ << ") in " << this->coeffs().name()
+                << exit(FatalError);
+        }
+        lastFactors_ = riser::WallFactors(d/pipeDiameter_);
+        lastDiameter_ = d;
+    }
+    return lastFactors_;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    law_
+    (
+        checkedEntry::choice<riser::DragLaw>
+        (
+            this->coeffs(), "law",
+            {{"paper", riser::DragLaw::paper},
+             {"continuous", riser::DragLaw::continuous}}
+        )
+    ),
+    pipeDiameter_(checkedEntry::positive(this->coeffs(), "pipeDiameter")),
+    lastDiameter_(-1),
+    lastFactors_(0)
+{}
+
+
+template<class CloudType>
+Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
+(
+    const WallCorrectedDragForce<CloudType>& df
+)
+:
+    ParticleForce<CloudType>(df),
+    law_(df.law_),
+    pipeDiameter_(df.pipeDiameter_),
+    lastDiameter_(df.lastDiameter_),
+    lastFactors_(df.lastFactors_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    const scalar CdRe =
+        riser::dragCoefficientTimesRe(law_, Re, wallFactors(p.d()));
+
+    // F = (pi d^2/8) rho C_D |w| w = (pi d mu / 8) C_D Re_p w = Sp w
+    return forceSuSp(Zero, constant::mathematical::pi*p.d()*muc*CdRe/8.0);
+}
+
+
+// ************************************************************************* //

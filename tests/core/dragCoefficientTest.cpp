@@ -1,0 +1,120 @@
+// Tests of the wall-corrected drag coefficient (src/riserCore/drag).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "drag/dragCoefficient.hpp"
+
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace riser;
+
+// Stokes limit: for d/D -> 0 the wall factor tends to 1, so C_D Re_p / 24 -> 1.
+// With d/D = 1e-6 the factor is 1 + 2.105e-6 (first-order term of K), and
+// the continuous law's inertial part adds 0.15 Re^0.687 relative (1.3e-3 at
+// Re_p = 1e-3, 1.14e-5 at 1e-6); tolerances sit just above these deviations.
+TEST(DragCoefficient, StokesLimit)
+{
+    const WallFactors w(1e-6);
+    EXPECT_NEAR(dragCoefficient(DragLaw::paper, 1e-3, w)*1e-3/24.0, 1.0, 3e-6);
+    EXPECT_NEAR(dragCoefficient(DragLaw::continuous, 1e-3, w)*1e-3/24.0, 1.0, 1.5e-3);
+    EXPECT_NEAR(dragCoefficient(DragLaw::continuous, 1e-6, w)*1e-6/24.0, 1.0, 1.5e-5);
+}
+
+// K at d/D = 0.1, evaluated by hand from the Clift-Grace-Weber formula:
+// (1 - 7.5857e-6) / (1 - 0.2105 + 0.0020865 - 1.7068e-5 + 7.2603e-7) = 1.26331.
+// The issue gives 1.2633 (5 digits): tolerance half a unit of its last digit.
+TEST(DragCoefficient, WallFactorAtOneTenth)
+{
+    const WallFactors w(0.1);
+    EXPECT_NEAR(w.K, 1.2633, 5e-5);
+    // K_F1 = 1 / (1 - 1.6 * 0.1^1.6): 0.1^1.6 = 0.0251189, by hand 1/0.9598097 = 1.041873.
+    EXPECT_NEAR(w.KF1, 1.041873, 1e-6);
+    // The Stokes branch is 24 K / Re.
+    EXPECT_NEAR(dragCoefficient(DragLaw::paper, 0.5, w), 48.0*1.2633, 48.0*5e-5);
+}
+
+// The paper's correlation: find every jump on a fine logarithmic scan of
+// Re_p in [1e-2, 1e6] by bisection and check where they are. Expected: Re = 1
+// (24 K -> 24 K + 4), Re = 100 (the large one, about 1.10 -> 0.42 for small
+// d/D), Re = 1e5 (K_F1 -> K_F2); none at 600, where the branch was extended.
+TEST(DragCoefficient, PaperJumpsWhereExpected)
+{
+    const WallFactors w(1e-3);
+    auto cd = [&](double Re) { return dragCoefficient(DragLaw::paper, Re, w); };
+    std::vector<double> jumps;
+    double largestJump = 0.0, largestAt = 0.0;
+    const int n = 20000;
+    for (int i = 0; i < n; ++i)
+    {
+        double a = std::pow(10.0, -2.0 + 8.0*i/n);
+        double b = std::pow(10.0, -2.0 + 8.0*(i + 1)/n);
+        // a smooth branch changes by at most ~0.2% over one scan interval
+        if (std::abs(cd(b) - cd(a)) < 0.01*cd(a)) continue;
+        for (int k = 0; k < 80; ++k)
+        {
+            const double m = std::sqrt(a*b);
+            (std::abs(cd(m) - cd(a)) < 0.01*cd(a) ? a : b) = m;
+        }
+        jumps.push_back(b);
+        const double size = std::abs(cd(b) - cd(a))/cd(a);   // relative
+        if (size > largestJump) { largestJump = size; largestAt = b; }
+    }
+    ASSERT_EQ(jumps.size(), 2u);  // Re=1 and Re=100 (K_F1 = K_F2 + O(1e-5) at small d/D)
+    EXPECT_NEAR(jumps[0], 1.0, 1e-9);
+    EXPECT_NEAR(jumps[1], paperDragJumpRe, 1e-7);
+    EXPECT_NEAR(largestAt, 100.0, 1e-7);
+    // the two sides of the jump at 100, by hand for d/D = 1e-3 (K = 1.00211)
+    EXPECT_NEAR(cd(100.0*(1.0 - 1e-12)), 1.1023, 1e-4);   // 0.24 (21.5443/6 + 1.00211)
+    EXPECT_NEAR(cd(100.0), 0.42, 1e-4);                   // 0.42 K_F1, K_F1 = 1 + 2.5e-5
+    // the extension: no jump at 600
+    EXPECT_DOUBLE_EQ(cd(599.0), cd(601.0));
+}
+
+// The continuous alternative has no jump anywhere the paper's law has one:
+// across each point the change over a relative step of 1e-9 is below 1e-6
+// relative (a smooth function changes by ~1e-9 there).
+TEST(DragCoefficient, ContinuousAlternativeIsContinuous)
+{
+    const WallFactors w(0.1);
+    for (double Re : {1.0, 40.0, 100.0, 600.0, 1e5})
+    {
+        const double lo = dragCoefficient(DragLaw::continuous, Re*(1.0 - 1e-9), w);
+        const double hi = dragCoefficient(DragLaw::continuous, Re*(1.0 + 1e-9), w);
+        EXPECT_LT(std::abs(hi - lo), 1e-6*lo) << "at Re = " << Re;
+    }
+    // Newton regime, d/D -> 0: the standard drag curve (Clift, Grace & Weber
+    // 1978, table 5.2) gives C_D = 0.405 at Re = 1e4; the fit is within 3%.
+    const WallFactors w0(0.0);
+    EXPECT_NEAR(dragCoefficient(DragLaw::continuous, 1e4, w0), 0.405, 0.03*0.405);
+    // ... and carries the Newton-regime wall factor K_F1 there: the ratio to
+    // the unbounded value tends to K_F1 as the Stokes part 24(K - K_F1)/Re fades.
+    const double ratio = dragCoefficient(DragLaw::continuous, 1e4, w)
+                       / dragCoefficient(DragLaw::continuous, 1e4, w0);
+    EXPECT_NEAR(ratio, w.KF1, 0.01);
+}
+
+TEST(DragCoefficient, TimesReIsFiniteAtZeroSlip)
+{
+    const WallFactors w(0.1);
+    EXPECT_DOUBLE_EQ(dragCoefficientTimesRe(DragLaw::paper, 0.0, w), 24.0*w.K);
+    EXPECT_DOUBLE_EQ(dragCoefficientTimesRe(DragLaw::paper, 3.0, w),
+                     3.0*dragCoefficient(DragLaw::paper, 3.0, w));
+}
+
+TEST(DragCoefficient, RejectsBadArguments)
+{
+    EXPECT_THROW(WallFactors(1.0), std::invalid_argument);
+    EXPECT_THROW(WallFactors(-0.1), std::invalid_argument);
+    const WallFactors w(0.1);
+    EXPECT_THROW(dragCoefficient(DragLaw::paper, 0.0, w), std::invalid_argument);
+    EXPECT_THROW(dragCoefficient(DragLaw::paper, NAN, w), std::invalid_argument);
+    try
+    {
+        WallFactors bad(1.5);
+        FAIL();
+    }
+    catch (const std::invalid_argument& e)
+    {
+        EXPECT_NE(std::string(e.what()).find("'d/D'"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("[0, 1)"), std::string::npos) << e.what();
+    }
+}

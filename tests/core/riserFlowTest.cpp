@@ -1,0 +1,75 @@
+// Tests of the analytic oscillating-riser carrier (src/riserCore/carrier).
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "carrier/riserFlow.hpp"
+
+#include <gtest/gtest.h>
+#include <cmath>
+
+using namespace riser;
+
+namespace {
+// The paper's base case: D = 0.1 m, u_cm = 1 m/s, A = 0.1 m, f = 3 Hz, phi0 = 0.4.
+const RiserFlow flow(0.1, 1.0, 0.1, 2.0*M_PI*3.0, 0.4);
+const double h = 1e-6;    // finite-difference step [m] and [s]
+
+// Central differences have truncation error h^2/6 u''' (u is quadratic in x,
+// so exact up to round-off there; sinusoidal in t: A w^3 h^2 / 6 ~ 1e-9) and
+// round-off eps |u| / h ~ 1e-10: tolerance 1e-7 covers both with margin.
+const double tol = 1e-7;
+
+Vector dudx(const Vector& x, double t, int k)
+{
+    Vector e = Vector::Zero(); e[k] = h;
+    return (flow.velocity(x + e, t) - flow.velocity(x - e, t))/(2.0*h);
+}
+}
+
+TEST(RiserFlow, VorticityEqualsCurlByFiniteDifferences)
+{
+    for (double t : {0.0, 0.07, 0.21})
+    {
+        for (const Vector& x : {Vector(0.01, -0.02, 0.3), Vector(-0.03, 0.04, 1.0), Vector(0.1, 0.0, 0.0)})
+        {
+            const Vector gx = dudx(x, t, 0), gy = dudx(x, t, 1), gz = dudx(x, t, 2);
+            const Vector curl(gy.z() - gz.y(), gz.x() - gx.z(), gx.y() - gy.x());
+            EXPECT_NEAR((flow.vorticity(x, t) - curl).norm(), 0.0, tol*100.0);
+        }
+    }
+}
+
+TEST(RiserFlow, MaterialDerivativeByFiniteDifferences)
+{
+    for (double t : {0.0, 0.07, 0.21})
+    {
+        const Vector x(0.02, 0.01, 0.5);
+        const Vector u = flow.velocity(x, t);
+        const Vector dudt = (flow.velocity(x, t + h) - flow.velocity(x, t - h))/(2.0*h);
+        const Vector convective = dudx(x, t, 0)*u.x() + dudx(x, t, 1)*u.y() + dudx(x, t, 2)*u.z();
+        EXPECT_NEAR((flow.materialDerivative(x, t) - (dudt + convective)).norm(), 0.0, tol*100.0);
+    }
+}
+
+TEST(RiserFlow, RiserKinematics)
+{
+    for (double t : {0.0, 0.05, 0.13})
+    {
+        const double v = (flow.axisPosition(t + h) - flow.axisPosition(t - h))/(2.0*h);
+        const double a = (flow.riserVelocity(t + h) - flow.riserVelocity(t - h))/(2.0*h);
+        EXPECT_NEAR(flow.riserVelocity(t), v, tol);
+        EXPECT_NEAR(flow.riserAcceleration(t), a, tol*100.0);
+    }
+    EXPECT_NEAR(flow.axisPosition(0.0), 0.1*std::sin(0.4), 1e-15);
+    // Poiseuille profile: u_cm on the axis, zero on the wall, riser speed sideways
+    const double t = 0.1;
+    EXPECT_NEAR(flow.velocity(Vector(flow.axisPosition(t), 0, 2), t).z(), 1.0, 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(flow.axisPosition(t) + 0.05, 0, 2), t).z(), 0.0, 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(0, 0.05, 2), t).x(), flow.riserVelocity(t), 1e-15);
+}
+
+TEST(RiserFlow, RejectsBadArguments)
+{
+    EXPECT_THROW(RiserFlow(0.0, 1.0, 0.1, 1.0, 0.0), std::invalid_argument);
+    EXPECT_THROW(RiserFlow(0.1, -1.0, 0.1, 1.0, 0.0), std::invalid_argument);
+    EXPECT_THROW(RiserFlow(0.1, 1.0, -0.1, 1.0, 0.0), std::invalid_argument);
+    EXPECT_THROW(RiserFlow(0.1, 1.0, 0.1, -1.0, 0.0), std::invalid_argument);
+}
