@@ -5,6 +5,7 @@
 #define RISERCORE_VECTOR_HPP
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>   // cross products
 
 namespace riser {
 

@@ -6,15 +6,21 @@ Description
     Registers the riser particle forces for the stock colliding cloud
     basicKinematicCollidingCloud, so that icoUncoupledKinematicParcelFoam,
     icoUncoupledKinematicParcelDyMFoam and DPMFoam find them after
-    libs ("libriserLagrangian.so"); in constant/<cloud>Properties.
+    libs ("libriserLagrangian.so"); in system/controlDict.
 
 \*---------------------------------------------------------------------------*/
 
 #include "basicKinematicCollidingCloud.H"
 #include "WallCorrectedDragForce.H"
+#include "RiserSaffmanMeiLiftForce.H"
+#include "RiserAddedMassForce.H"
+#include "RiserFluidStressForce.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeParticleForceModelType(WallCorrectedDragForce, basicKinematicCollidingCloud);
+makeParticleForceModelType(RiserSaffmanMeiLiftForce, basicKinematicCollidingCloud);
+makeParticleForceModelType(RiserAddedMassForce, basicKinematicCollidingCloud);
+makeParticleForceModelType(RiserFluidStressForce, basicKinematicCollidingCloud);
 
 // ************************************************************************* //

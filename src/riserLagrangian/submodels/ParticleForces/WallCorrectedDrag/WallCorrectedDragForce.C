@@ -39,6 +39,7 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    carrier_(carrierFlow::New(mesh)),
     law_
     (
         checkedEntry::choice<riser::DragLaw>
@@ -61,6 +62,7 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
 )
 :
     ParticleForce<CloudType>(df),
+    carrier_(df.carrier_),
     law_(df.law_),
     pipeDiameter_(df.pipeDiameter_),
     lastDiameter_(df.lastDiameter_),
@@ -81,11 +83,23 @@ Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
-    const scalar CdRe =
-        riser::dragCoefficientTimesRe(law_, Re, wallFactors(p.d()));
+    const riser::WallFactors& factors = wallFactors(p.d());
+    const scalar Sp0 = constant::mathematical::pi*p.d()*muc/8.0;
 
     // F = (pi d^2/8) rho C_D |w| w = (pi d mu / 8) C_D Re_p w = Sp w
-    return forceSuSp(Zero, constant::mathematical::pi*p.d()*muc*CdRe/8.0);
+    if (!carrier_.exact())
+    {
+        return forceSuSp
+        (
+            Zero,
+            Sp0*riser::dragCoefficientTimesRe(law_, Re, factors)
+        );
+    }
+
+    const vector u = carrier_.velocity(p, td.Uc());
+    const scalar ReExact = td.rhoc()*mag(u - p.U())*p.d()/muc;
+    const scalar Sp = Sp0*riser::dragCoefficientTimesRe(law_, ReExact, factors);
+    return forceSuSp(Sp*(u - td.Uc()), Sp);
 }
 
 

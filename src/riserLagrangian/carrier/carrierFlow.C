@@ -1,0 +1,209 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "carrierFlow.H"
+#include "checkedEntry.H"
+#include "fvcCurl.H"
+#include "fvcDdt.H"
+#include "fvcGrad.H"
+#include "fvcReconstruct.H"
+#include "fvMesh.H"
+#include "IOdictionary.H"
+#include "unitConversion.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(carrierFlow, 0);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::carrierFlow::carrierFlow(const fvMesh& mesh)
+:
+    regIOobject
+    (
+        IOobject
+        (
+            typeName,
+            mesh.time().constant(),
+            mesh,
+            IOobject::NO_READ,
+            IOobject::NO_WRITE
+        )
+    ),
+    mesh_(mesh),
+    UName_("U"),
+    evaluation_(evaluation::interpolated)
+{
+    IOobject io
+    (
+        "riserProperties",
+        mesh.time().constant(),
+        mesh,
+        IOobject::MUST_READ,
+        IOobject::NO_WRITE,
+        false
+    );
+
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        const IOdictionary dict(io);
+        riser_.reset(new riser::RiserFlow(readRiser(dict)));
+        evaluation_ = checkedEntry::choice<evaluation>
+        (
+            dict, "carrier",
+            {{"exact", evaluation::exact},
+             {"interpolated", evaluation::interpolated}}
+        );
+        UName_ = dict.lookupOrDefault<word>("U", "U");
+    }
+
+    Info<< "Carrier flow: "
+        << (exact() ? "exact (analytic riser)" : "interpolated from U")
+        << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::carrierFlow& Foam::carrierFlow::New(const fvMesh& mesh)
+{
+    if (!mesh.foundObject<carrierFlow>(typeName))
+    {
+        carrierFlow* ptr = new carrierFlow(mesh);
+        ptr->store();
+    }
+    return mesh.lookupObjectRef<carrierFlow>(typeName);
+}
+
+
+riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
+{
+    using checkedEntry::dimensionedInRange;
+
+    const scalar D =
+        dimensionedInRange(dict, "D", dimLength, 0, false, GREAT, true);
+    const scalar uCentre =
+        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, GREAT, true);
+    const scalar A =
+        dimensionedInRange(dict, "A", dimLength, 0, true, GREAT, true);
+
+    const bool hasF = dict.found("f"), hasOmega = dict.found("omega");
+    if (hasF == hasOmega)
+    {
+        FatalIOErrorInFunction(dict)
+            << "give exactly one of the entries 'f' [Hz] and 'omega' [rad/s]"
+            << exit(FatalIOError);
+    }
+    const scalar omega = hasF
+      ? constant::mathematical::twoPi
+       *dimensionedInRange(dict, "f", dimless/dimTime, 0, true, GREAT, true)
+      : dimensionedInRange(dict, "omega", dimless/dimTime, 0, true, GREAT, true);
+
+    const scalar phi0 = dict.lookupOrDefault<scalar>("phi0", 0);
+
+    return riser::RiserFlow(D, uCentre, A, omega, phi0);
+}
+
+
+// * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+const riser::RiserFlow& Foam::carrierFlow::riser() const
+{
+    if (!riser_)
+    {
+        FatalErrorInFunction
+            << "no analytic riser: constant/riserProperties is missing"
+            << exit(FatalError);
+    }
+    return *riser_;
+}
+
+
+Foam::tmp<Foam::volVectorField> Foam::carrierFlow::buildVorticity() const
+{
+    return fvc::curl(mesh_.lookupObject<volVectorField>(UName_));
+}
+
+
+Foam::tmp<Foam::volVectorField>
+Foam::carrierFlow::buildMaterialDerivative() const
+{
+    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
+    if (mesh_.moving())
+    {
+        // convect with the velocity relative to the moving cells
+        const volVectorField Umesh(fvc::reconstruct(mesh_.phi()));
+        return fvc::ddt(U) + ((U - Umesh) & fvc::grad(U));
+    }
+    return fvc::ddt(U) + (U & fvc::grad(U));
+}
+
+
+void Foam::carrierFlow::cache
+(
+    cachedField& c,
+    const bool store,
+    const dictionary& interpolationSchemes,
+    const word& name,
+    tmp<volVectorField> (carrierFlow::*build)() const
+)
+{
+    if (exact())
+    {
+        return;
+    }
+    if (store)
+    {
+        if (c.users++ == 0)
+        {
+            c.field.reset(new volVectorField(name, (this->*build)()));
+            // interpolated with the scheme the cloud uses for U
+            c.interp.reset
+            (
+                interpolation<vector>::New
+                (
+                    interpolationSchemes.get<word>(UName_),
+                    *c.field
+                ).ptr()
+            );
+        }
+    }
+    else if (c.users > 0 && --c.users == 0)
+    {
+        c.interp.reset();
+        c.field.reset();
+    }
+}
+
+
+void Foam::carrierFlow::cacheVorticity
+(
+    const bool store,
+    const dictionary& schemes
+)
+{
+    cache(vorticity_, store, schemes, "carrierVorticity", &carrierFlow::buildVorticity);
+}
+
+
+void Foam::carrierFlow::cacheMaterialDerivative
+(
+    const bool store,
+    const dictionary& schemes
+)
+{
+    cache
+    (
+        materialDerivative_, store, schemes,
+        "carrierMaterialDerivative", &carrierFlow::buildMaterialDerivative
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,102 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "carrierFlow.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace carrierFlowDetail
+{
+    inline riser::Vector toCore(const vector& v)
+    {
+        return riser::Vector(v.x(), v.y(), v.z());
+    }
+
+    inline vector fromCore(const riser::Vector& v)
+    {
+        return vector(v.x(), v.y(), v.z());
+    }
+}
+}
+
+
+template<class ParcelType>
+Foam::vector Foam::carrierFlow::interpolate
+(
+    const cachedField& c,
+    const ParcelType& p
+) const
+{
+    if (!c.interp)
+    {
+        FatalErrorInFunction
+            << "carrier field requested outside cacheFields(true/false)"
+            << abort(FatalError);
+    }
+    return c.interp->interpolate(p.coordinates(), p.currentTetIndices());
+}
+
+
+template<class ParcelType>
+Foam::vector Foam::carrierFlow::velocity
+(
+    const ParcelType& p,
+    const vector& Uc
+) const
+{
+    if (!exact())
+    {
+        return Uc;
+    }
+    return carrierFlowDetail::fromCore
+    (
+        riser_->velocity
+        (
+            carrierFlowDetail::toCore(p.position()),
+            particleTime(p.stepFraction())
+        )
+    );
+}
+
+
+template<class ParcelType>
+Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
+{
+    if (!exact())
+    {
+        return interpolate(vorticity_, p);
+    }
+    return carrierFlowDetail::fromCore
+    (
+        riser_->vorticity
+        (
+            carrierFlowDetail::toCore(p.position()),
+            particleTime(p.stepFraction())
+        )
+    );
+}
+
+
+template<class ParcelType>
+Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
+{
+    if (!exact())
+    {
+        return interpolate(materialDerivative_, p);
+    }
+    return carrierFlowDetail::fromCore
+    (
+        riser_->materialDerivative
+        (
+            carrierFlowDetail::toCore(p.position()),
+            particleTime(p.stepFraction())
+        )
+    );
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,67 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "RiserAddedMassForce.H"
+#include "checkedEntry.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RiserAddedMassForce<CloudType>::RiserAddedMassForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    RiserFluidStressForce<CloudType>(owner, mesh, dict, typeName, true),
+    CA_(checkedEntry::nonNegative(this->coeffs(), "CA"))
+{}
+
+
+template<class CloudType>
+Foam::RiserAddedMassForce<CloudType>::RiserAddedMassForce
+(
+    const RiserAddedMassForce<CloudType>& f
+)
+:
+    RiserFluidStressForce<CloudType>(f),
+    CA_(f.CA_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::forceSuSp Foam::RiserAddedMassForce<CloudType>::calcCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    forceSuSp value =
+        RiserFluidStressForce<CloudType>::calcCoupled(p, td, dt, mass, Re, muc);
+    value.Su() *= CA_;
+    return value;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserAddedMassForce<CloudType>::massAdd
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar mass
+) const
+{
+    return CA_*mass*td.rhoc()/p.rho();
+}
+
+
+// ************************************************************************* //
