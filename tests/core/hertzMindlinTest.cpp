@@ -19,15 +19,16 @@ struct ImpactResult { double deltaMax, forceMax, duration, reboundSpeed; };
 // Head-on impact at speed v on a wall below the particle, integrated by the
 // test itself with classical RK4 at a step of duration/steps; the contact
 // law supplies the force only. The particle starts touching (delta = 0).
-ImpactResult normalImpact(const HertzMindlin& law, double mass, double v, double tcGuess,
-                          int steps = 20000)
+ImpactResult normalImpact(const HertzMindlin& law, const ContactBody& body, double v,
+                          double tcGuess, int steps = 20000)
 {
+    const double mass = body.mass;
     const Vector n(0, 0, -1);                   // from the centre towards the wall
     const double dt = tcGuess/steps;
     double delta = 0.0, u = v;                  // u = approach speed = U . n
     auto acc = [&](double d, double uu)
     {
-        return law.force(d, n, uu*n, Vector::Zero()).normal.dot(n)/mass;  // du/dt = F.n/m
+        return law.force(body, d, n, uu*n, Vector::Zero()).normal.dot(n)/mass;  // du/dt = F.n/m
     };
     ImpactResult r{0, 0, 0, 0};
     double t = 0.0;
@@ -48,19 +49,19 @@ ImpactResult normalImpact(const HertzMindlin& law, double mass, double v, double
         }
         delta = dNew; u = uNew; t += dt;
         r.deltaMax = std::max(r.deltaMax, delta);
-        r.forceMax = std::max(r.forceMax, law.force(delta, n, u*n, Vector::Zero()).normal.norm());
+        r.forceMax = std::max(r.forceMax, law.force(body, delta, n, u*n, Vector::Zero()).normal.norm());
     }
     ADD_FAILURE() << "contact did not end";
     return r;
 }
 
+// Chung & Ooi, Granular Matter 13, 643 (2011), test 2: aluminium-alloy
+// sphere, R = 0.1 m, E = 70 GPa, nu = 0.3, rho = 2699 kg/m^3, rigid plane.
+const ContactBody chungOoiSphere(0.1, 2699.0*4.0/3.0*M_PI*0.001);
+
 HertzMindlinParameters chungOoiTest2(double e, NormalForceFloor floor)
 {
-    // Chung & Ooi, Granular Matter 13, 643 (2011), test 2: aluminium-alloy
-    // sphere, R = 0.1 m, E = 70 GPa, nu = 0.3, rho = 2699 kg/m^3, rigid plane.
-    const double R = 0.1, rho = 2699.0;
-    return HertzMindlinParameters{ElasticMaterial(70e9, 0.3), rigidWall, R,
-        rho*4.0/3.0*M_PI*R*R*R, e, 1.0, 0.0, floor};
+    return HertzMindlinParameters{ElasticMaterial(70e9, 0.3), rigidWall, e, 1.0, 0.0, floor};
 }
 
 // Hertz's closed-form impact (Johnson, Contact Mechanics, 1985, sec. 11.4).
@@ -81,11 +82,12 @@ struct HertzImpact
 // the published values (49.7 um, 11.37 kN, 732 us) within their 3 digits.
 TEST(HertzMindlin, ChungOoiTest2ElasticImpact)
 {
-    const auto p = chungOoiTest2(1.0, NormalForceFloor::tensionAllowed);
-    const HertzMindlin law(p);
+    const HertzMindlin law(chungOoiTest2(1.0, NormalForceFloor::tensionAllowed));
+    const ContactBody& b = chungOoiSphere;
     const double v = 0.2;
-    const HertzImpact ref(p.mass, 70e9/(1.0 - 0.09), p.radius, v);
-    const ImpactResult r = normalImpact(law, p.mass, v, ref.duration);
+    const HertzImpact ref(b.mass, 70e9/(1.0 - 0.09), b.radius, v);
+    EXPECT_NEAR(law.contactTime(b, v)/ref.duration, 1.0, 1e-12);
+    const ImpactResult r = normalImpact(law, b, v, ref.duration);
     EXPECT_NEAR(r.deltaMax/ref.deltaMax, 1.0, 0.005);
     EXPECT_NEAR(r.forceMax/ref.forceMax, 1.0, 0.005);
     EXPECT_NEAR(r.duration/ref.duration, 1.0, 0.005);
@@ -103,13 +105,12 @@ TEST(HertzMindlin, RestitutionMatchesTargetAtAllSpeeds)
     {
         for (double e : {0.1, 0.3, 0.5, 0.76, 0.9, 1.0})
         {
-            const auto p = chungOoiTest2(e, floor);
-            const HertzMindlin law(p);
+            const HertzMindlin law(chungOoiTest2(e, floor));
+            const ContactBody& b = chungOoiSphere;
             for (double v : {0.01, 0.1, 1.0, 10.0})
             {
-                const HertzImpact ref(p.mass, law.equivalentYoungModulus(), p.radius, v);
                 // heavy damping lengthens the contact: allow up to 3 t_c
-                const ImpactResult r = normalImpact(law, p.mass, v, 3.0*ref.duration, 60000);
+                const ImpactResult r = normalImpact(law, b, v, 3.0*law.contactTime(b, v), 60000);
                 EXPECT_NEAR(r.reboundSpeed/v, e, 0.005*e)
                     << "e = " << e << ", v = " << v
                     << ", floor " << (floor == NormalForceFloor::noTension ? "noTension" : "tension");
@@ -149,30 +150,31 @@ TEST(HertzMindlin, EquivalentModuli)
 // Tangential law: the spring sticks below the Coulomb limit and slides at it.
 TEST(HertzMindlin, TangentialStickAndSlide)
 {
-    const double R = 5e-3, m = 2000.0*4.0/3.0*M_PI*R*R*R, mu = 0.2;
+    const double R = 5e-3, mu = 0.2;
+    const ContactBody b(R, 2000.0*4.0/3.0*M_PI*R*R*R);
     const HertzMindlinParameters p{ElasticMaterial(60e9, 0.26), ElasticMaterial(200e9, 0.3),
-        R, m, 0.76, 0.7, mu, NormalForceFloor::tensionAllowed};
+        0.76, 0.7, mu, NormalForceFloor::tensionAllowed};
     const HertzMindlin law(p);
     const Vector n(1, 0, 0);
     const double delta = 1e-6;
-    const double fn = law.normalStiffness()*std::pow(delta, 1.5);   // no normal velocity
+    const double fn = law.normalStiffness(b)*std::pow(delta, 1.5);   // no normal velocity
     const double kt = 8.0*law.equivalentShearModulus()*std::sqrt(R*delta);
 
     const Vector small(0, 0, 0.5*mu*fn/kt);
-    const ContactForce stick = law.force(delta, n, Vector::Zero(), small);
+    const ContactForce stick = law.force(b, delta, n, Vector::Zero(), small);
     EXPECT_FALSE(stick.sliding);
     EXPECT_NEAR((stick.tangential + kt*small).norm(), 0.0, 1e-9*fn);
     EXPECT_NEAR(stick.normal.dot(n), -fn, 1e-9*fn);
 
     const Vector large(0, 3.0*mu*fn/kt, 0);
-    const ContactForce slide = law.force(delta, n, Vector::Zero(), large);
+    const ContactForce slide = law.force(b, delta, n, Vector::Zero(), large);
     EXPECT_TRUE(slide.sliding);
     EXPECT_NEAR(slide.tangential.norm(), mu*fn, 1e-9*fn);
     EXPECT_LT(slide.tangential.y(), 0.0);
     EXPECT_NEAR(slide.springAfter.norm(), mu*fn/kt, 1e-12);
 
     // no overlap, no force
-    EXPECT_EQ(law.force(0.0, n, Vector(1, 1, 1), large).normal.norm(), 0.0);
+    EXPECT_EQ(law.force(b, 0.0, n, Vector(1, 1, 1), large).normal.norm(), 0.0);
 }
 
 TEST(HertzMindlin, RejectsBadArguments)
@@ -185,6 +187,8 @@ TEST(HertzMindlin, RejectsBadArguments)
     auto p = chungOoiTest2(0.5, NormalForceFloor::tensionAllowed);
     p.friction = -0.1;
     EXPECT_THROW((HertzMindlin(p)), std::invalid_argument);
+    EXPECT_THROW(ContactBody(0.0, 1.0), std::invalid_argument);
+    EXPECT_THROW(ContactBody(1.0, -1.0), std::invalid_argument);
     try
     {
         ElasticMaterial bad(1e9, 0.7);

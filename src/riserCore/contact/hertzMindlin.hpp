@@ -69,17 +69,32 @@ inline double linearDampingRatio(double e)
     return -l/std::sqrt(M_PI*M_PI + l*l);
 }
 
-//- Everything the contact law needs, in SI units.
+//- The material side of the contact law, in SI units; the particle's
+//  radius and mass are arguments of each force evaluation, so that one law
+//  (with its damping calibrated once) serves particles of any size.
 struct HertzMindlinParameters
 {
     ElasticMaterial particle;
     ElasticMaterial wall;
-    double radius;          //!< particle radius R_p [m]
-    double mass;            //!< particle mass m_p [kg]
     double normalRestitution;      //!< e_n in (0, 1]
     double tangentialRestitution;  //!< e_t in (0, 1]
     double friction;        //!< Coulomb coefficient mu_c >= 0
     NormalForceFloor floor = NormalForceFloor::tensionAllowed;
+};
+
+//- The particle in contact: R_eq = R_p and M_eq = m_p against the wall.
+struct ContactBody
+{
+    double radius;          //!< particle radius R_p [m]
+    double mass;            //!< particle mass m_p [kg]
+
+    ContactBody(double r, double m)
+    :
+        radius(r), mass(m)
+    {
+        requirePositive("riser::ContactBody", "R_p", r);
+        requirePositive("riser::ContactBody", "m_p", m);
+    }
 };
 
 //- Contact force on the particle and the tangential spring to keep.
@@ -98,42 +113,51 @@ public:
     :
         Eeq_(riser::equivalentYoungModulus(p.particle, p.wall)),
         Geq_(riser::equivalentShearModulus(p.particle, p.wall)),
-        Req_(p.radius),
-        Meq_(p.mass),
         alphaN_(dampingRatio(p.normalRestitution, p.floor)),
         zetaT_(linearDampingRatio(p.tangentialRestitution)),
         friction_(p.friction),
         floor_(p.floor)
     {
-        requirePositive("riser::HertzMindlin", "R_p", p.radius);
-        requirePositive("riser::HertzMindlin", "m_p", p.mass);
         requireNonNegative("riser::HertzMindlin", "mu_c", p.friction);
-        kn_ = 4.0/3.0*Eeq_*std::sqrt(Req_);
     }
 
     double equivalentYoungModulus() const { return Eeq_; }
     double equivalentShearModulus() const { return Geq_; }
-    double normalStiffness() const { return kn_; }
     double normalDampingRatio() const { return alphaN_; }
 
-    //- Force for overlap deltaN >= 0 along unit normal n, contact-point
-    //  velocity U relative to the wall, and tangential spring deltaT.
-    ContactForce force(double deltaN, const Vector& n, const Vector& U,
-                       const Vector& deltaT) const
+    //- k_n = 4/3 E_eq sqrt(R_eq)
+    double normalStiffness(const ContactBody& b) const
+    {
+        return 4.0/3.0*Eeq_*std::sqrt(b.radius);
+    }
+
+    //- Hertz contact time of an undamped impact at speed v (Johnson 1985)
+    double contactTime(const ContactBody& b, double v) const
+    {
+        requirePositive("riser::HertzMindlin::contactTime", "v", v);
+        return 2.8683*std::pow(b.mass*b.mass/(b.radius*Eeq_*Eeq_*v), 0.2);
+    }
+
+    //- Force on body b for overlap deltaN >= 0 along unit normal n (from
+    //  the centre towards the wall), contact-point velocity U relative to
+    //  the wall, and tangential spring deltaT.
+    ContactForce force(const ContactBody& b, double deltaN, const Vector& n,
+                       const Vector& U, const Vector& deltaT) const
     {
         ContactForce c{Vector::Zero(), Vector::Zero(), Vector::Zero(), false};
         if (deltaN <= 0.0) return c;
 
+        const double kn = normalStiffness(b);
         const double Un = U.dot(n);
         const double sqrtDelta = std::sqrt(deltaN);
-        double fn = kn_*deltaN*sqrtDelta
-                  + alphaN_*std::sqrt(kn_*Meq_)*std::sqrt(sqrtDelta)*Un;
+        double fn = kn*deltaN*sqrtDelta
+                  + alphaN_*std::sqrt(kn*b.mass)*std::sqrt(sqrtDelta)*Un;
         if (floor_ == NormalForceFloor::noTension && fn < 0.0) fn = 0.0;
         c.normal = -fn*n;
 
         const Vector Ut = U - Un*n;
-        const double kt = 8.0*Geq_*std::sqrt(Req_*deltaN);
-        const double etaT = 2.0*zetaT_*std::sqrt(kt*Meq_);
+        const double kt = 8.0*Geq_*std::sqrt(b.radius*deltaN);
+        const double etaT = 2.0*zetaT_*std::sqrt(kt*b.mass);
         const double limit = friction_*std::abs(fn);
         const double spring = kt*deltaT.norm();
         if (spring <= limit)
@@ -152,9 +176,8 @@ public:
     }
 
 private:
-    double Eeq_, Geq_, Req_, Meq_, alphaN_, zetaT_, friction_;
+    double Eeq_, Geq_, alphaN_, zetaT_, friction_;
     NormalForceFloor floor_;
-    double kn_;
 };
 
 } // namespace riser

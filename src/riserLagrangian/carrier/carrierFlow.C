@@ -87,11 +87,11 @@ riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
     using checkedEntry::dimensionedInRange;
 
     const scalar D =
-        dimensionedInRange(dict, "D", dimLength, 0, false, GREAT, true);
+        dimensionedInRange(dict, "D", dimLength, 0, false, VGREAT, true);
     const scalar uCentre =
-        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, GREAT, true);
+        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, VGREAT, true);
     const scalar A =
-        dimensionedInRange(dict, "A", dimLength, 0, true, GREAT, true);
+        dimensionedInRange(dict, "A", dimLength, 0, true, VGREAT, true);
 
     const bool hasF = dict.found("f"), hasOmega = dict.found("omega");
     if (hasF == hasOmega)
@@ -102,8 +102,8 @@ riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
     }
     const scalar omega = hasF
       ? constant::mathematical::twoPi
-       *dimensionedInRange(dict, "f", dimless/dimTime, 0, true, GREAT, true)
-      : dimensionedInRange(dict, "omega", dimless/dimTime, 0, true, GREAT, true);
+       *dimensionedInRange(dict, "f", dimless/dimTime, 0, true, VGREAT, true)
+      : dimensionedInRange(dict, "omega", dimless/dimTime, 0, true, VGREAT, true);
 
     const scalar phi0 = dict.lookupOrDefault<scalar>("phi0", 0);
 

@@ -1,0 +1,291 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "RiserWallContact.H"
+#include "checkedEntry.H"
+
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+riser::HertzMindlin Foam::RiserWallContact<CloudType>::readLaw() const
+{
+    using namespace checkedEntry;
+
+    const dictionary& coeffs = this->coeffDict();
+    const dictionary& constProps = this->owner().constProps().dict();
+    const dictionary& wall = coeffs.subDict("wall");
+
+    const riser::ElasticMaterial particle
+    (
+        positive(constProps, "youngsModulus"),
+        inRange(constProps, "poissonsRatio", -1, false, 0.5, false)
+    );
+    const riser::ElasticMaterial wallMaterial
+    (
+        positive(wall, "youngsModulus"),
+        inRange(wall, "poissonsRatio", -1, false, 0.5, false)
+    );
+
+    return riser::HertzMindlin
+    (
+        riser::HertzMindlinParameters
+        {
+            particle,
+            wallMaterial,
+            inRange(coeffs, "normalRestitution", 0, false, 1, true),
+            inRange(coeffs, "tangentialRestitution", 0, false, 1, true),
+            nonNegative(coeffs, "friction"),
+            choice<riser::NormalForceFloor>
+            (
+                coeffs, "normalForce",
+                {{"tensionAllowed", riser::NormalForceFloor::tensionAllowed},
+                 {"noTension", riser::NormalForceFloor::noTension}}
+            )
+        }
+    );
+}
+
+
+template<class CloudType>
+Foam::OFstream& Foam::RiserWallContact<CloudType>::contactFile()
+{
+    if (!contactFile_.valid())
+    {
+        const fvMesh& mesh = this->owner().mesh();
+        const fileName dir =
+            mesh.time().globalPath()/"postProcessing"/"lagrangian"
+           /this->owner().name()/typeName;
+        mkDir(dir);
+        const word name =
+            Pstream::parRun()
+          ? "contacts_proc" + Foam::name(Pstream::myProcNo()) + ".dat"
+          : "contacts.dat";
+        contactFile_.reset(new OFstream(dir/name));
+        contactFile_()
+            << "# riserWallContact: one completed particle-wall contact a line"
+            << nl
+            << "# velocities relative to the wall [m/s], spin [rad/s], SI units"
+            << nl
+            << "# origProc origId tStart tEnd duration overlapMax"
+            << " normalForceMax Uin_x Uin_y Uin_z Uout_x Uout_y Uout_z"
+            << " omegaIn_x omegaIn_y omegaIn_z omegaOut_x omegaOut_y omegaOut_z"
+            << nl;
+        contactFile_().precision(12);
+    }
+    return contactFile_();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RiserWallContact<CloudType>::RiserWallContact
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    CollisionModel<CloudType>(dict, owner, typeName),
+    carrier_(carrierFlow::New(owner.mesh())),
+    law_(readLaw()),
+    rotation_(this->coeffDict().lookupOrDefault("rotation", Switch(false))),
+    stepsPerContact_
+    (
+        this->coeffDict().template lookupOrDefault<label>("stepsPerContact", 40)
+    ),
+    maxSubCycles_
+    (
+        this->coeffDict().template lookupOrDefault<label>("maxSubCycles", 100000)
+    )
+{
+    checkedEntry::checkRange
+    (
+        this->coeffDict(), "stepsPerContact", stepsPerContact_, 10, true, GREAT, true
+    );
+    checkedEntry::checkRange
+    (
+        this->coeffDict(), "maxSubCycles", maxSubCycles_, 1, true, GREAT, true
+    );
+    // the riser must exist: FatalError here rather than at the first step
+    carrier_.riser();
+
+    Info<< "    riserWallContact: normal damping ratio "
+        << law_.normalDampingRatio() << ", rotation " << rotation_ << endl;
+}
+
+
+template<class CloudType>
+Foam::RiserWallContact<CloudType>::RiserWallContact
+(
+    const RiserWallContact<CloudType>& cm
+)
+:
+    CollisionModel<CloudType>(cm),
+    carrier_(cm.carrier_),
+    law_(cm.law_),
+    rotation_(cm.rotation_),
+    stepsPerContact_(cm.stepsPerContact_),
+    maxSubCycles_(cm.maxSubCycles_),
+    events_(cm.events_),
+    lost_(cm.lost_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
+{
+    const Time& time = this->owner().mesh().time();
+    const riser::RiserFlow& flow = carrier_.riser();
+    const scalar dt = time.deltaTValue();
+    const scalar t0 = time.value() - dt;
+    const scalar xc = flow.axisPosition(t0);
+    const scalar wallSpeedMax = flow.amplitude()*flow.omega();
+
+    label nSub = 1, nNear = 0;
+    for (const parcelType& p : this->owner())
+    {
+        const point x = p.position();
+        const scalar h = Foam::sqrt(sqr(x.x() - xc) + sqr(x.y()));
+        const scalar speed = mag(p.U()) + wallSpeedMax;
+        const scalar gap = flow.radius() - h - 0.5*p.d();
+        if (gap > speed*dt)
+        {
+            continue;
+        }
+        ++nNear;
+        const riser::ContactBody body(0.5*p.d(), p.mass());
+        const scalar tc = law_.contactTime(body, max(speed, SMALL));
+        nSub = max(nSub, label(ceil(stepsPerContact_*dt/tc)));
+    }
+    reduce(nSub, maxOp<label>());
+    reduce(nNear, sumOp<label>());
+
+    if (nSub > maxSubCycles_)
+    {
+        WarningInFunction
+            << nSub << " sub-cycles needed to resolve the wall contacts, "
+            << "limited to maxSubCycles = " << maxSubCycles_ << endl;
+        nSub = maxSubCycles_;
+    }
+    if (nNear)
+    {
+        Info<< "    riserWallContact: " << nNear << " particle(s) near the wall"
+            << endl;
+    }
+    return nSub;
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::collide()
+{
+    const Time& time = this->owner().mesh().time();
+    const riser::RiserFlow& flow = carrier_.riser();
+    const scalar t = time.value();
+    const scalar dt = time.deltaTValue();
+    const scalar xc = flow.axisPosition(t);
+    const vector Uwall(flow.riserVelocity(t), 0, 0);
+    const scalar R = flow.radius();
+
+    auto toCore = [](const vector& v) { return riser::Vector(v.x(), v.y(), v.z()); };
+    auto fromCore = [](const riser::Vector& v) { return vector(v.x(), v.y(), v.z()); };
+
+    for (parcelType& p : this->owner())
+    {
+        p.f() = Zero;
+        p.torque() = Zero;
+
+        const point x = p.position();
+        const vector r(x.x() - xc, x.y(), 0);
+        const scalar h = mag(r);
+        const scalar Rp = 0.5*p.d();
+        const labelPair key(p.origProc(), p.origId());
+
+        if (h > R && lost_.insert(key))
+        {
+            WarningInFunction
+                << "particle " << key << " has its centre outside the pipe at t = "
+                << t << ": distance from the axis " << h << " > D/2 = " << R
+                << "; " << lost_.size() << " particle(s) lost so far" << endl;
+        }
+
+        const vector spin = rotation_ ? p.omega() : vector::zero;
+        const scalar overlap = h + Rp - R;
+
+        if (overlap <= 0 || h < VSMALL)
+        {
+            auto iter = events_.find(key);
+            if (iter.found())
+            {
+                const contactEvent& e = *iter;
+                const vector Uout = p.U() - Uwall;
+                contactFile()
+                    << key.first() << ' ' << key.second() << ' '
+                    << e.start << ' ' << t << ' ' << t - e.start << ' '
+                    << e.overlapMax << ' ' << e.normalForceMax << ' '
+                    << e.velocityIn.x() << ' ' << e.velocityIn.y() << ' '
+                    << e.velocityIn.z() << ' '
+                    << Uout.x() << ' ' << Uout.y() << ' ' << Uout.z() << ' '
+                    << e.spinIn.x() << ' ' << e.spinIn.y() << ' '
+                    << e.spinIn.z() << ' '
+                    << spin.x() << ' ' << spin.y() << ' ' << spin.z() << endl;
+                events_.erase(iter);
+            }
+            // no record accessed: update() drops the tangential spring
+            p.collisionRecords().update();
+            continue;
+        }
+
+        const vector n = r/h;
+        const vector U = p.U() - Uwall + (spin ^ (Rp*n));
+
+        // the tangential spring, kept in the current tangent plane
+        vector& spring =
+            p.collisionRecords().matchWallRecord(0.99*Rp*n, Rp).collisionData();
+        const vector inPlane = spring - (spring & n)*n;
+        const scalar magInPlane = mag(inPlane);
+        spring =
+            (magInPlane > VSMALL ? mag(spring)/magInPlane*inPlane : vector::zero)
+          + (U - (U & n)*n)*dt;
+
+        const riser::ContactForce c =
+            law_.force
+            (
+                riser::ContactBody(Rp, p.mass()),
+                overlap, toCore(n), toCore(U), toCore(spring)
+            );
+        spring = fromCore(c.springAfter);
+
+        const vector Fn = fromCore(c.normal);
+        const vector Ft = fromCore(c.tangential);
+        p.f() = Fn + Ft;
+        if (rotation_)
+        {
+            p.torque() = (Rp*n) ^ Ft;
+        }
+        p.collisionRecords().update();
+
+        auto iter = events_.find(key);
+        if (!iter.found())
+        {
+            events_.insert
+            (
+                key,
+                contactEvent{t - dt, overlap, mag(Fn), p.U() - Uwall, spin}
+            );
+        }
+        else
+        {
+            contactEvent& e = *iter;
+            e.overlapMax = max(e.overlapMax, overlap);
+            e.normalForceMax = max(e.normalForceMax, mag(Fn));
+        }
+    }
+}
+
+
+// ************************************************************************* //
