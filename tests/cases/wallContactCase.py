@@ -24,8 +24,9 @@ def write(path, text):
 
 def make_case(case, D, radius, rho, E, nu, wall_E, wall_nu, e_n, e_t, mu,
               velocities, rotation=False, dt=1e-5, end=2e-4,
-              steps_per_contact=400, normal_force="tensionAllowed"):
-    """velocities: list of (v_x, v_z) pairs, v_x towards the wall (> 0)."""
+              steps_per_contact=400, normal_force="tensionAllowed", positions=None):
+    """velocities: list of (v_x, v_z) pairs, v_x towards the wall (> 0);
+    positions: list of (x, y, z) to use instead of the default starts."""
     R = 0.5 * D
     half = 0.6 * D
     height = 0.4 * D * max(len(velocities), 1) + 4 * radius
@@ -77,10 +78,11 @@ boundaryField { walls { type noSlip; } }
           + "D %.17g;\nuCentre 0;\nA 0;\nf 0;\ncarrier exact;\n" % D)
     injectors = []
     for i, (vx, vz) in enumerate(velocities):
-        z = 0.4 * D * i + 2 * radius
-        x0 = R - radius - 3 * dt * vx
+        start = (R - radius - 3 * dt * vx, 0.0, 0.4 * D * i + 2 * radius)
+        if positions:
+            start = positions[i]
         write(case + "/constant/positions%d" % i, header("vectorField", "positions%d" % i)
-              + "((%.17g 0 %.17g))\n" % (x0, z))
+              + "((%.17g %.17g %.17g))\n" % start)
         injectors.append("""
         p%(i)d
         {
@@ -135,14 +137,13 @@ cloudFunctions {}
 
 
 def read_contacts(case):
-    """Completed contacts, by particle origId: dict of named columns."""
+    """Completed contacts in the order they ended: dicts of named columns."""
     path = case + "/postProcessing/lagrangian/kinematicCloud/riserWallContact/contacts.dat"
     names = None
-    contacts = {}
+    contacts = []
     for line in open(path):
         if line.startswith("# origProc"):
             names = line[2:].split()
         elif line.strip() and not line.startswith("#"):
-            row = dict(zip(names, (float(v) for v in line.split())))
-            contacts[int(row["origId"])] = row
+            contacts.append(dict(zip(names, (float(v) for v in line.split()))))
     return contacts
