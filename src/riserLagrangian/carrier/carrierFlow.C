@@ -8,7 +8,6 @@
 #include "fvcCurl.H"
 #include "fvcDdt.H"
 #include "fvcGrad.H"
-#include "fvcReconstruct.H"
 #include "fvMesh.H"
 #include "IOdictionary.H"
 #include "unitConversion.H"
@@ -23,7 +22,7 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::carrierFlow::carrierFlow(const fvMesh& mesh)
+Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
 :
     regIOobject
     (
@@ -61,6 +60,10 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh)
              {"interpolated", evaluation::interpolated}}
         );
         UName_ = dict.lookupOrDefault<word>("U", "U");
+    }
+    if (forceInterpolated)
+    {
+        evaluation_ = evaluation::interpolated;
     }
 
     Info<< "Carrier flow: "
@@ -131,6 +134,55 @@ Foam::tmp<Foam::volVectorField> Foam::carrierFlow::buildVorticity() const
 }
 
 
+Foam::tmp<Foam::volVectorField> Foam::carrierFlow::meshVelocity() const
+{
+    // The mean velocity of each cell's (and boundary face's) points over the
+    // step: exact for a translating or rotating mesh at the centroid to
+    // second order. (fvc::reconstruct(mesh.phi()) gave wrong values in
+    // cells next to the curved wall of the riser O-grid on v1912.)
+    const pointField& p = mesh_.points();
+    const pointField& p0 = mesh_.oldPoints();
+    const scalar rDeltaT = 1/mesh_.time().deltaTValue();
+
+    tmp<volVectorField> tUmesh
+    (
+        new volVectorField
+        (
+            IOobject("carrierMeshVelocity", mesh_.time().timeName(), mesh_),
+            mesh_,
+            dimensionedVector(dimVelocity, Zero)
+        )
+    );
+    volVectorField& Umesh = tUmesh.ref();
+
+    auto mean = [&](const labelUList& pointLabels)
+    {
+        vector sum(Zero);
+        for (const label pointi : pointLabels)
+        {
+            sum += p[pointi] - p0[pointi];
+        }
+        return rDeltaT*sum/pointLabels.size();
+    };
+
+    vectorField& Ui = Umesh.primitiveFieldRef();
+    forAll(Ui, celli)
+    {
+        Ui[celli] = mean(mesh_.cellPoints()[celli]);
+    }
+    forAll(Umesh.boundaryField(), patchi)
+    {
+        fvPatchVectorField& Up = Umesh.boundaryFieldRef()[patchi];
+        const label start = mesh_.boundaryMesh()[patchi].start();
+        forAll(Up, facei)
+        {
+            Up[facei] = mean(mesh_.faces()[start + facei]);
+        }
+    }
+    return tUmesh;
+}
+
+
 Foam::tmp<Foam::volVectorField>
 Foam::carrierFlow::buildMaterialDerivative() const
 {
@@ -138,8 +190,7 @@ Foam::carrierFlow::buildMaterialDerivative() const
     if (mesh_.moving())
     {
         // convect with the velocity relative to the moving cells
-        const volVectorField Umesh(fvc::reconstruct(mesh_.phi()));
-        return fvc::ddt(U) + ((U - Umesh) & fvc::grad(U));
+        return fvc::ddt(U) + ((U - meshVelocity()) & fvc::grad(U));
     }
     return fvc::ddt(U) + (U & fvc::grad(U));
 }
