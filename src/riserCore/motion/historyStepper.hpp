@@ -1,0 +1,111 @@
+// riserCore: a second-order stepper for a particle with added mass and a
+// Basset history force, the history's newest weight treated implicitly.
+//
+// The law of motion (the System) is
+//     m dv/dt = F(v, t) + m_A (Du/Dt - dv/dt) + K_H H(t),
+//     H(t)    = w(0)/sqrt(t) + int_0^t (dw/dtau) / sqrt(t - tau) dtau,
+//     w = u - v,
+// with F every other force (drag, lift, fluid stress, weight, ...), m_A the
+// added mass and K_H = C_H (d^2/4) sqrt(pi rho mu) the history coefficient.
+// The System supplies m, m_A, K_H, F(v, t), u(t) and Du/Dt(t) along the
+// particle's path; it knows nothing of the scheme.
+//
+// Scheme: trapezoidal in v, with the acceleration a_{n+1} at the new time
+// from the law of motion there,
+//     v_{n+1} = v_n + h/2 (a_n + a_{n+1}),
+//     (m + m_A + K_H c) a_{n+1} = F(v_{n+1}, t_{n+1}) + (m_A + K_H c) Du/Dt
+//                                 + K_H H_known,   c = (4/3) sqrt(h),
+// where H_known is the history integral at t_{n+1} without its newest value
+// (riser::HistoryIntegral): the newest weight sits beside the added mass,
+// so the scheme stays stable for light particles, where an explicit newest
+// weight does not. F's dependence on v_{n+1} is resolved by fixed-point
+// iteration (to a relative change of 1e-14 or 50 iterations).
+//
+// The step h is constant (the history's grid). The history's first value
+// needs dw/dt at t = 0: the System must start without slip (w(0) = 0) or
+// accept the initial-slip term, which makes the Basset force infinite at
+// t = 0+ (it is integrable); the stepper then starts from the acceleration
+// without that term, a first-step error of order sqrt(h).
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef RISERCORE_MOTION_HISTORYSTEPPER_HPP
+#define RISERCORE_MOTION_HISTORYSTEPPER_HPP
+
+#include "../basset/historyIntegral.hpp"
+
+#include <cmath>
+
+namespace riser {
+
+template<class System>
+class HistoryStepper
+{
+public:
+    using Value = typename System::Value;
+
+    HistoryStepper(const System& system, HistoryMethod method, double h,
+                   long window, const Value& v0, double t0 = 0.0)
+    :
+        sys_(system),
+        h_(h),
+        t_(t0),
+        v_(v0),
+        a_(initialAcceleration(system, v0, t0)),
+        history_(method, h, window, system.carrierVelocity(t0) - v0,
+                 system.carrierAcceleration(t0) - a_)
+    {}
+
+    double time() const { return t_; }
+    const Value& velocity() const { return v_; }
+    const Value& acceleration() const { return a_; }
+    const HistoryIntegral<Value>& history() const { return history_; }
+
+    //- Basset force at the current time (after the first step)
+    Value historyForce() const { return sys_.historyCoefficient()*history_.value(); }
+
+    void step()
+    {
+        const double tNew = t_ + h_;
+        const double c = history_.newestWeight();
+        const double mA = sys_.addedMass(), KH = sys_.historyCoefficient();
+        const double inertia = sys_.mass() + mA + KH*c;
+        const Value DuDt = sys_.carrierAcceleration(tNew);
+        const Value known = sys_.historyCoefficient()*history_.knownPart() + (mA + KH*c)*DuDt;
+
+        Value a = a_;
+        for (int it = 0; it < 50; ++it)
+        {
+            const Value v = v_ + 0.5*h_*(a_ + a);
+            const Value aNew = (sys_.force(v, tNew) + known)/inertia;
+            const double change = norm(aNew - a), size = norm(aNew) + 1e-300;
+            a = aNew;
+            if (change <= 1e-14*size) break;
+        }
+        v_ = v_ + 0.5*h_*(a_ + a);
+        a_ = a;
+        t_ = tNew;
+        history_.push(DuDt - a_);
+    }
+
+private:
+    static double norm(double x) { return std::abs(x); }
+    template<class V> static double norm(const V& x) { return x.norm(); }
+
+    //- m dv/dt = F + m_A (Du/Dt - dv/dt) at t0, without the history term
+    static Value initialAcceleration(const System& s, const Value& v0, double t0)
+    {
+        return (s.force(v0, t0) + s.addedMass()*s.carrierAcceleration(t0))
+              /(s.mass() + s.addedMass());
+    }
+
+    const System& sys_;
+    double h_;
+    double t_;
+    Value v_;
+    Value a_;
+    HistoryIntegral<Value> history_;
+};
+
+} // namespace riser
+
+#endif
