@@ -167,6 +167,38 @@ TEST(BassetMotion, SettlingFromRestMatchesTheClosedForm)
     EXPECT_LT(std::abs(f3 - e3), 2e-4);
 }
 
+// Stability: a light particle (rho_p/rho_f = 0.1, a rising bubble-like
+// sphere) with a step h = 0.02 s. With the newest history weight lagged the
+// scheme multiplies errors by about -K_H c/(m + m_A) = -1.6 each step and
+// blows up; treated implicitly beside the added mass it stays bounded and
+// converges to the closed form (h is 0.6 response times here, so the first
+// steps are coarse: the check is boundedness and the error at t = 2 s).
+TEST(BassetMotion, LightParticleNeedsTheImplicitNewestWeight)
+{
+    const StokesSphere s{5e-4, 100.0};
+    const double h = 0.02;
+    const double KHc = s.historyCoefficient()*4.0/3.0*std::sqrt(h);
+    EXPECT_GT(KHc/(s.mass() + s.addedMass()), 1.0);
+
+    HistoryStepper<StokesSphere> lagged(s, HistoryMethod::fullHistory, h, 0, 0.0, 0.0,
+                                        NewestHistoryWeight::lagged);
+    HistoryStepper<StokesSphere> implicit(s, HistoryMethod::fullHistory, h, 0, 0.0);
+    const double Vt = std::abs(settlingClosedForm(s, 2.0));
+    double largest = 0.0;
+    for (int k = 1; k <= 100; ++k)
+    {
+        lagged.step();
+        implicit.step();
+        largest = std::max(largest, std::abs(implicit.velocity()));
+    }
+    const double finalError = std::abs(implicit.velocity() - settlingClosedForm(s, 2.0))/Vt;
+    std::printf("light particle: lagged |v| = %.3e after 2 s; implicit: largest |v| %.3f V, "
+                "error at 2 s %.3e\n", std::abs(lagged.velocity()), largest/Vt, finalError);
+    EXPECT_TRUE(!std::isfinite(lagged.velocity()) || std::abs(lagged.velocity()) > 1e3*Vt);
+    EXPECT_LT(largest, 1.5*Vt);
+    EXPECT_LT(finalError, 0.01);
+}
+
 // A particle in a uniform carrier oscillating as U cos(omega t) (Stokes
 // drag, added mass, fluid stress, Basset; no weight): the periodic state has
 //   V/U = [1 + sqrt(i s) + i s/3] / [1 + sqrt(i s) + (2 beta + 1) i s/9],

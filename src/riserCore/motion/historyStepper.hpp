@@ -21,6 +21,11 @@
 // weight does not. F's dependence on v_{n+1} is resolved by fixed-point
 // iteration (to a relative change of 1e-14 or 50 iterations).
 //
+// For comparison the newest weight can be lagged instead (explicit: it uses
+// the previous acceleration); that is unstable when K_H c > m + m_A, that is
+// for h > pi a^2 (beta + 1/2)^2 / (36 nu) - light particles (beta = rho_p/rho_f
+// small) at any practical step (tested).
+//
 // The step h is constant (the history's grid). The history's first value
 // needs dw/dt at t = 0: the System must start without slip (w(0) = 0) or
 // accept the initial-slip term, which makes the Basset force infinite at
@@ -37,6 +42,8 @@
 
 namespace riser {
 
+enum class NewestHistoryWeight { implicit, lagged };
+
 template<class System>
 class HistoryStepper
 {
@@ -44,9 +51,11 @@ public:
     using Value = typename System::Value;
 
     HistoryStepper(const System& system, HistoryMethod method, double h,
-                   long window, const Value& v0, double t0 = 0.0)
+                   long window, const Value& v0, double t0 = 0.0,
+                   NewestHistoryWeight newest = NewestHistoryWeight::implicit)
     :
         sys_(system),
+        implicit_(newest == NewestHistoryWeight::implicit),
         h_(h),
         t_(t0),
         v_(v0),
@@ -68,9 +77,11 @@ public:
         const double tNew = t_ + h_;
         const double c = history_.newestWeight();
         const double mA = sys_.addedMass(), KH = sys_.historyCoefficient();
-        const double inertia = sys_.mass() + mA + KH*c;
         const Value DuDt = sys_.carrierAcceleration(tNew);
-        const Value known = sys_.historyCoefficient()*history_.knownPart() + (mA + KH*c)*DuDt;
+        const double inertia = sys_.mass() + mA + (implicit_ ? KH*c : 0.0);
+        const Value known = implicit_
+          ? Value(KH*history_.knownPart() + (mA + KH*c)*DuDt)
+          : Value(KH*history_.knownPart() + mA*DuDt + KH*c*(DuDt - a_));
 
         Value a = a_;
         for (int it = 0; it < 50; ++it)
@@ -99,6 +110,7 @@ private:
     }
 
     const System& sys_;
+    bool implicit_;
     double h_;
     double t_;
     Value v_;
