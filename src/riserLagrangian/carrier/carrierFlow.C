@@ -37,7 +37,8 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
     ),
     mesh_(mesh),
     UName_("U"),
-    evaluation_(evaluation::interpolated)
+    evaluation_(evaluation::interpolated),
+    frame_(simulationFrame::lab)
 {
     IOobject io
     (
@@ -52,13 +53,32 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
     if (io.typeHeaderOk<IOdictionary>(true))
     {
         const IOdictionary dict(io);
-        riser_.reset(new riser::RiserFlow(readRiser(dict)));
-        evaluation_ = checkedEntry::choice<evaluation>
+        motion_.reset(new riser::RiserFlow(readRiser(dict)));
+        frame_ = dict.found("frame")
+          ? checkedEntry::choice<simulationFrame>
+            (
+                dict, "frame",
+                {{"lab", simulationFrame::lab}, {"riser", simulationFrame::riser}}
+            )
+          : simulationFrame::lab;
+        riser_.reset
         (
-            dict, "carrier",
-            {{"exact", evaluation::exact},
-             {"interpolated", evaluation::interpolated}}
+            frame_ == simulationFrame::lab
+          ? new riser::RiserFlow(*motion_)
+          : new riser::RiserFlow
+            (
+                motion_->diameter(), motion_->centreLineSpeed(), 0, 0, 0
+            )
         );
+        if (dict.found("carrier"))
+        {
+            evaluation_ = checkedEntry::choice<evaluation>
+            (
+                dict, "carrier",
+                {{"exact", evaluation::exact},
+                 {"interpolated", evaluation::interpolated}}
+            );
+        }
         UName_ = dict.lookupOrDefault<word>("U", "U");
     }
     if (forceInterpolated)
@@ -68,6 +88,7 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
 
     Info<< "Carrier flow: "
         << (exact() ? "exact (analytic riser)" : "interpolated from U")
+        << (frame_ == simulationFrame::riser ? ", riser frame" : "")
         << endl;
 }
 
@@ -125,6 +146,13 @@ const riser::RiserFlow& Foam::carrierFlow::riser() const
             << exit(FatalError);
     }
     return *riser_;
+}
+
+
+const riser::RiserFlow& Foam::carrierFlow::riserMotion() const
+{
+    riser();
+    return *motion_;
 }
 
 

@@ -15,6 +15,7 @@ Description
 #include "RiserSaffmanMeiLiftForce.H"
 #include "RiserAddedMassForce.H"
 #include "RiserFluidStressForce.H"
+#include "RiserFrameForce.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -22,5 +23,6 @@ makeParticleForceModelType(WallCorrectedDragForce, basicKinematicCollidingCloud)
 makeParticleForceModelType(RiserSaffmanMeiLiftForce, basicKinematicCollidingCloud);
 makeParticleForceModelType(RiserAddedMassForce, basicKinematicCollidingCloud);
 makeParticleForceModelType(RiserFluidStressForce, basicKinematicCollidingCloud);
+makeParticleForceModelType(RiserFrameForce, basicKinematicCollidingCloud);
 
 // ************************************************************************* //

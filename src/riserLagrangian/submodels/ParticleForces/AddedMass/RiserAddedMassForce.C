@@ -45,10 +45,12 @@ Foam::forceSuSp Foam::RiserAddedMassForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
-    forceSuSp value =
-        RiserFluidStressForce<CloudType>::calcCoupled(p, td, dt, mass, Re, muc);
-    value.Su() *= CA_;
-    return value;
+    // C_A rho_c V_p Du/Dt: relative accelerations, the same in either frame
+    return forceSuSp
+    (
+        CA_*mass*td.rhoc()/p.rho()*this->carrier_.materialDerivative(p),
+        0
+    );
 }
 
 

@@ -57,8 +57,17 @@ Foam::forceSuSp Foam::RiserFluidStressForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
-    // rho_c V_p Du/Dt, V_p = mass/rho_p
-    return forceSuSp(mass*td.rhoc()/p.rho()*carrier_.materialDerivative(p), 0);
+    // rho_c V_p Du/Dt, V_p = mass/rho_p, with the fluid's inertial
+    // acceleration (the frame's acceleration added in the riser frame)
+    return forceSuSp
+    (
+        mass*td.rhoc()/p.rho()
+       *(
+            carrier_.materialDerivative(p)
+          + carrier_.frameAcceleration(carrier_.particleTime(p.stepFraction()))
+        ),
+        0
+    );
 }
 
 
