@@ -10,9 +10,11 @@ Description
 
 #include "basicKinematicCollidingCloud.H"
 #include "ParticleForceFields.H"
+#include "RiserParticleTable.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeCloudFunctionObjectType(ParticleForceFields, basicKinematicCollidingCloud);
+makeCloudFunctionObjectType(RiserParticleTable, basicKinematicCollidingCloud);
 
 // ************************************************************************* //

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ParticleForceFields.H"
+#include "particleForceEvaluation.H"
 #include "IOField.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -58,23 +59,11 @@ void Foam::ParticleForceFields<CloudType>::write()
     label j = 0;
     for (auto& p : cloud)
     {
-        // The particle is at its end-of-step state, but the colliding
-        // cloud's closing velocity half-step leaves stepFraction at 0: mark
-        // the step as done while the forces are evaluated, so that the
-        // exact carrier is evaluated at the current time.
-        const scalar stepFraction = p.stepFraction();
-        p.stepFraction() = 1;
-        p.setCellValues(cloud, td);
-        const scalar mass = p.mass();
-        const scalar Re = p.Re(td);
+        const List<vector> F = particleForces(cloud, p, td, dt);
         forAll(forces, i)
         {
-            const forceSuSp F =
-                forces[i].calcCoupled(p, td, dt, mass, Re, td.muc())
-              + forces[i].calcNonCoupled(p, td, dt, mass, Re, td.muc());
-            fields[i][j] = F.Su() + F.Sp()*(td.Uc() - p.U());
+            fields[i][j] = F[i];
         }
-        p.stepFraction() = stepFraction;
         ++j;
     }
     forces.cacheFields(false);

@@ -1,0 +1,95 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+
+Application
+    riserParcelFoam
+
+Group
+    riserFoam/solvers
+
+Description
+    Particles in the oscillating riser of Wei et al. (Phys. Fluids 35,
+    113311, 2023): the analytic carrier of constant/riserProperties imposed
+    on a riser mesh, and a colliding cloud evolved in it (one-way coupled).
+
+    Each step, in the stock order: store the particles' global positions,
+    move the mesh (constant/dynamicMeshDict: solidBodyMotionFunction
+    riserOscillation in the lab frame; no motion in the riser frame),
+    impose the carrier u(x, t) on the cells and on every boundary face (the
+    wall moves with the riser), keep U's old time (ddt(U) of the
+    interpolated carrier), then evolve the cloud, so that stock cloud
+    functions and function objects work.
+
+    constant/riserProperties (see carrierFlow) sets the riser, the carrier
+    evaluation (exact or interpolated) and the frame (lab: moving mesh and
+    wall; riser: static mesh, Poiseuille carrier and the frame force).
+
+    Checks at start: the riser exists, and its diameter and axis agree with
+    the mesh (largest distance of a mesh point from the axis at t = 0 equal
+    to D/2 within 0.1%).
+
+Usage
+    riserParcelFoam [-cloud name]
+
+\*---------------------------------------------------------------------------*/
+
+#include "fvCFD.H"
+#include "dynamicFvMesh.H"
+#include "singlePhaseTransportModel.H"
+#include "basicKinematicCollidingCloud.H"
+#include "carrierFlow.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Particles in an oscillating riser: analytic carrier on a riser mesh"
+        " (moving with the riser, or the riser's frame), colliding cloud"
+    );
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "cloud name (default kinematicCloud)"
+    );
+
+    #include "setRootCaseLists.H"
+    #include "createTime.H"
+    #include "createDynamicFvMesh.H"
+    #include "createFields.H"
+
+    // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+    Info<< "\nStarting time loop\n" << endl;
+
+    while (runTime.loop())
+    {
+        Info<< "Time = " << runTime.timeName() << nl << endl;
+
+        kinematicCloud.storeGlobalPositions();
+
+        mesh.update();
+
+        #include "imposeCarrier.H"
+
+        laminarTransport.correct();
+        mu = laminarTransport.nu()*rhoInfValue;
+
+        Info<< "Evolving " << kinematicCloud.name() << endl;
+        kinematicCloud.evolve();
+
+        runTime.write();
+
+        runTime.printExecutionTime(Info);
+    }
+
+    Info<< "End\n" << endl;
+
+    return 0;
+}
+
+
+// ************************************************************************* //

@@ -1,0 +1,82 @@
+#!/usr/bin/python3
+"""Plots the per-particle table of riserParticleTable (riserParcelFoam) or
+the mesh-free engine, in the paper's dimensionless units (length D, velocity
+u_cm, time D/u_cm), as in Wei et al. (2023), figs. 6-19.
+
+usage: plotRiserTable.py <particles.dat> <D> <u_cm> <A> <f> <phi0> <out prefix> [title]
+
+Writes <prefix>_motion.png (lateral position with the riser walls, relative
+lateral velocity, vertical velocity, lifting distance) and, when there were
+contacts, <prefix>_contacts.png (normal overlap and tangential spring).
+"""
+import math
+import sys
+
+import matplotlib
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt
+
+
+def read_table(path):
+    names, rows = None, []
+    for line in open(path):
+        if line.startswith("# t "):
+            names = line[2:].split()
+        elif line.strip() and not line.startswith("#"):
+            rows.append([float(v) for v in line.split()])
+    columns = {n: [r[i] for r in rows] for i, n in enumerate(names)}
+    return columns
+
+
+def main():
+    path, D, ucm, A, f, phi0, prefix = sys.argv[1:8]
+    title = sys.argv[8] if len(sys.argv) > 8 else ""
+    D, ucm, A, f, phi0 = map(float, (D, ucm, A, f, phi0))
+    T = D / ucm
+    c = read_table(path)
+    t = [v / T for v in c["t"]]
+    w = 2 * math.pi * f
+    xc = [A * math.sin(w * tt * T + phi0) / D for tt in t]
+    particles = sorted(set(zip(c["origProc"], c["origId"])))
+
+    fig, ax = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
+    ax[0][0].plot(t, [x + 0.5 for x in xc], "k-", lw=0.8, label="riser walls")
+    ax[0][0].plot(t, [x - 0.5 for x in xc], "k-", lw=0.8)
+    for key in particles:
+        sel = [i for i in range(len(t)) if (c["origProc"][i], c["origId"][i]) == key]
+        ts = [t[i] for i in sel]
+        lab = "particle %d" % key[1]
+        ax[0][0].plot(ts, [c["x"][i] / D for i in sel], label=lab)
+        ax[0][1].plot(ts, [c["Urx"][i] / ucm for i in sel], label=lab)
+        ax[1][0].plot(ts, [c["Uz"][i] / ucm for i in sel], label=lab)
+        ax[1][1].plot(ts, [c["lift"][i] / D for i in sel], label=lab)
+    ax[0][0].set_ylabel("lateral position x_p / D")
+    ax[0][1].set_ylabel("relative lateral velocity (v_px - U_r) / u_cm")
+    ax[1][0].set_ylabel("vertical velocity v_pz / u_cm")
+    ax[1][1].set_ylabel("lifting distance / D")
+    for a in ax[1]:
+        a.set_xlabel("t u_cm / D")
+    for a in ax.flat:
+        a.grid(alpha=0.3)
+    ax[0][0].legend(fontsize=7)
+    fig.suptitle(title)
+    fig.tight_layout()
+    fig.savefig(prefix + "_motion.png", dpi=110)
+    print("wrote", prefix + "_motion.png")
+
+    if max(c["deltaN"]) > 0:
+        fig, ax = plt.subplots(1, 2, figsize=(11, 3.6))
+        ax[0].plot(t, [v * 1e6 for v in c["deltaN"]], lw=0.8)
+        ax[1].plot(t, [v * 1e6 for v in c["deltaT"]], lw=0.8, color="C1")
+        ax[0].set_ylabel("normal overlap delta_n [um]")
+        ax[1].set_ylabel("tangential spring |delta_t| [um]")
+        for a in ax:
+            a.set_xlabel("t u_cm / D")
+            a.grid(alpha=0.3)
+        fig.suptitle(title + " - wall contacts")
+        fig.tight_layout()
+        fig.savefig(prefix + "_contacts.png", dpi=110)
+        print("wrote", prefix + "_contacts.png")
+
+
+main()
