@@ -81,6 +81,15 @@ int main(int argc, char *argv[])
         Info<< "Evolving " << kinematicCloud.name() << endl;
         kinematicCloud.evolve();
 
+        // The step is done: the colliding cloud's closing velocity
+        // half-step leaves stepFraction at 0, and on the moving mesh the
+        // positions written now (and stored at the next step's start) would
+        // use the mesh's old points, off by the riser's displacement.
+        for (auto& p : kinematicCloud)
+        {
+            p.stepFraction() = 1;
+        }
+
         runTime.write();
 
         runTime.printExecutionTime(Info);

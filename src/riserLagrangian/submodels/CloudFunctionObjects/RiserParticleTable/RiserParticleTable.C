@@ -108,6 +108,7 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
     for (auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
+        const endOfStep<typename CloudType::parcelType> done(p);
         const point x = p.position();
 
         // unwrap the height across the ends of a cyclic riser
