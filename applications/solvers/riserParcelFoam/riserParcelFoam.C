@@ -25,9 +25,17 @@ Description
     evaluation (exact or interpolated) and the frame (lab: moving mesh and
     wall; riser: static mesh, Poiseuille carrier and the frame force).
 
-    Checks at start: the riser exists, and its diameter and axis agree with
-    the mesh (largest distance of a mesh point from the axis at t = 0 equal
-    to D/2 within 0.1%).
+    Checks at start: the riser exists; its diameter and axis agree with the
+    mesh (largest distance of a mesh point from the axis at t = 0 equal to
+    D/2 within 0.1%); the frame agrees with the mesh motion (riser frame:
+    static mesh; lab frame with a moving riser: a dynamic mesh).
+
+    Which frame: measured on the flagship (11,520-cell O-grid, dt = 5e-4 s,
+    one particle, 5 periods), the lab frame's moving mesh costs 78 s and the
+    riser frame 3.2 s, 25 times less, for lifting distances that differ by
+    0.15% (first order in dt, tested). A rigid riser is best run in the
+    riser frame; the lab frame (moving mesh and wall) is the general path
+    for what moves otherwise.
 
 Usage
     riserParcelFoam [-cloud name]
