@@ -6,10 +6,15 @@ u_cm, time D/u_cm), as in Wei et al. (2023), figs. 6-19.
 usage: plotRiserTable.py <particles.dat> <D> <u_cm> <A> <f> <phi0> <out prefix> [title]
 
 Writes <prefix>_motion.png (lateral position with the riser walls, relative
-lateral velocity, vertical velocity, lifting distance) and, when there were
-contacts, <prefix>_contacts.png (normal overlap and tangential spring).
+lateral velocity, vertical velocity, lifting distance) and, when the wall
+contact wrote contacts (riserWallContact/contacts.dat beside the table's
+folder), <prefix>_contacts.png: each contact's largest normal overlap and
+normal force, and the velocity relative to the wall before and after.
+(A contact lasts tens of microseconds, far less than a flow step: the
+overlaps in the table, taken at the ends of steps, are mostly zero.)
 """
 import math
+import os
 import sys
 
 import matplotlib
@@ -64,19 +69,34 @@ def main():
     fig.savefig(prefix + "_motion.png", dpi=110)
     print("wrote", prefix + "_motion.png")
 
-    if max(c["deltaN"]) > 0:
-        fig, ax = plt.subplots(1, 2, figsize=(11, 3.6))
-        ax[0].plot(t, [v * 1e6 for v in c["deltaN"]], lw=0.8)
-        ax[1].plot(t, [v * 1e6 for v in c["deltaT"]], lw=0.8, color="C1")
-        ax[0].set_ylabel("normal overlap delta_n [um]")
-        ax[1].set_ylabel("tangential spring |delta_t| [um]")
-        for a in ax:
-            a.set_xlabel("t u_cm / D")
-            a.grid(alpha=0.3)
-        fig.suptitle(title + " - wall contacts")
-        fig.tight_layout()
-        fig.savefig(prefix + "_contacts.png", dpi=110)
-        print("wrote", prefix + "_contacts.png")
-
+    contacts_path = os.path.join(os.path.dirname(os.path.dirname(path)),
+                                 "riserWallContact", "contacts.dat")
+    if os.path.exists(contacts_path):
+        names, rows = None, []
+        for line in open(contacts_path):
+            if line.startswith("# origProc"):
+                names = line[2:].split()
+            elif line.strip() and not line.startswith("#"):
+                rows.append(dict(zip(names, (float(v) for v in line.split()))))
+        if rows:
+            tc = [r["tStart"] / T for r in rows]
+            fig, ax = plt.subplots(1, 3, figsize=(13, 3.6))
+            ax[0].plot(tc, [r["overlapMax"] * 1e6 for r in rows], "o")
+            ax[1].plot(tc, [r["normalForceMax"] for r in rows], "o", color="C1")
+            ax[2].plot(tc, [r["Uin_x"] / ucm for r in rows], "v", label="before")
+            ax[2].plot(tc, [r["Uout_x"] / ucm for r in rows], "^", label="after")
+            ax[2].plot(tc, [r["Uin_z"] / ucm for r in rows], "s", ms=3, label="vertical before")
+            ax[2].plot(tc, [r["Uout_z"] / ucm for r in rows], "d", ms=3, label="vertical after")
+            ax[0].set_ylabel("largest overlap delta_n [um]")
+            ax[1].set_ylabel("largest normal force [N]")
+            ax[2].set_ylabel("velocity relative to the wall / u_cm")
+            ax[2].legend(fontsize=7)
+            for a in ax:
+                a.set_xlabel("contact start, t u_cm / D")
+                a.grid(alpha=0.3)
+            fig.suptitle(title + " - %d wall contacts" % len(rows))
+            fig.tight_layout()
+            fig.savefig(prefix + "_contacts.png", dpi=110)
+            print("wrote", prefix + "_contacts.png")
 
 main()
