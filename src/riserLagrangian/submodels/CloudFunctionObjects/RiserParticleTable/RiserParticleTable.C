@@ -6,6 +6,7 @@
 #include "RiserParticleTable.H"
 #include "particleForceEvaluation.H"
 #include "checkedEntry.H"
+#include "cloudOutputFile.H"
 #include "boundBox.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
@@ -15,18 +16,12 @@ Foam::OFstream& Foam::RiserParticleTable<CloudType>::file()
 {
     if (!file_.valid())
     {
-        const fvMesh& mesh = this->owner().mesh();
-        const fileName dir =
-            mesh.time().globalPath()/"postProcessing"/"lagrangian"
-           /this->owner().name()/typeName;
-        mkDir(dir);
-        const word name =
-            Pstream::parRun()
-          ? "particles_proc" + Foam::name(Pstream::myProcNo()) + ".dat"
-          : "particles.dat";
-        file_.reset(new OFstream(dir/name));
+        file_ =
+            cloudOutputFile
+            (
+                this->owner().mesh(), this->owner().name(), typeName, "particles"
+            );
         OFstream& os = file_();
-        os.precision(12);
         os  << "# riserParticleTable, SI units; relative: to the riser axis"
             << " and velocity" << nl
             << "# t origProc origId x y z Ux Uy Uz xr yr Urx Ury Urz lift"

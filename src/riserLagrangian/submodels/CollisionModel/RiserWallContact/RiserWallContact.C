@@ -5,6 +5,7 @@
 
 #include "RiserWallContact.H"
 #include "checkedEntry.H"
+#include "cloudOutputFile.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -53,16 +54,11 @@ Foam::OFstream& Foam::RiserWallContact<CloudType>::contactFile()
 {
     if (!contactFile_.valid())
     {
-        const fvMesh& mesh = this->owner().mesh();
-        const fileName dir =
-            mesh.time().globalPath()/"postProcessing"/"lagrangian"
-           /this->owner().name()/typeName;
-        mkDir(dir);
-        const word name =
-            Pstream::parRun()
-          ? "contacts_proc" + Foam::name(Pstream::myProcNo()) + ".dat"
-          : "contacts.dat";
-        contactFile_.reset(new OFstream(dir/name));
+        contactFile_ =
+            cloudOutputFile
+            (
+                this->owner().mesh(), this->owner().name(), typeName, "contacts"
+            );
         contactFile_()
             << "# riserWallContact: one completed particle-wall contact a line"
             << nl
@@ -72,7 +68,6 @@ Foam::OFstream& Foam::RiserWallContact<CloudType>::contactFile()
             << " normalForceMax Uin_x Uin_y Uin_z Uout_x Uout_y Uout_z"
             << " omegaIn_x omegaIn_y omegaIn_z omegaOut_x omegaOut_y omegaOut_z"
             << nl;
-        contactFile_().precision(12);
     }
     return contactFile_();
 }
