@@ -5,7 +5,9 @@ u_cm, time D/u_cm), as in Wei et al. (2023), figs. 6-19.
 
 usage: plotRiserTable.py <particles.dat> <D> <u_cm> <A> <f> <phi0> <out prefix> [title]
 
-Writes <prefix>_motion.png (lateral position with the riser walls, relative
+Writes <prefix>_track3d.png (the particle tracks relative to the riser
+axis, inside the riser wall, in 3-D; ParaView is not installed by the
+project's scripts, so this stands in for a rendered picture), <prefix>_motion.png (lateral position with the riser walls, relative
 lateral velocity, vertical velocity, lifting distance) and, when the wall
 contact wrote contacts (riserWallContact/contacts.dat beside the table's
 folder), <prefix>_contacts.png: each contact's largest normal overlap and
@@ -68,6 +70,29 @@ def main():
     fig.tight_layout()
     fig.savefig(prefix + "_motion.png", dpi=110)
     print("wrote", prefix + "_motion.png")
+
+    fig = plt.figure(figsize=(5.5, 7))
+    ax3 = fig.add_subplot(projection="3d")
+    zmax = max(c["lift"]) / D
+    theta = [2 * math.pi * k / 60 for k in range(61)]
+    for frac in (0.0, 0.5, 1.0):
+        ax3.plot([0.5 * math.cos(a) for a in theta], [0.5 * math.sin(a) for a in theta],
+                 [frac * zmax] * len(theta), color="grey", lw=0.6)
+    for a in theta[::6]:
+        ax3.plot([0.5 * math.cos(a)] * 2, [0.5 * math.sin(a)] * 2, [0, zmax],
+                 color="grey", lw=0.4, alpha=0.6)
+    for key in particles:
+        sel = [i for i in range(len(t)) if (c["origProc"][i], c["origId"][i]) == key]
+        ax3.plot([c["xr"][i] / D for i in sel], [c["yr"][i] / D for i in sel],
+                 [c["lift"][i] / D for i in sel], lw=1.2)
+    ax3.set_xlabel("(x - x_c) / D")
+    ax3.set_ylabel("y / D")
+    ax3.set_zlabel("lifting distance / D")
+    ax3.set_box_aspect((1, 1, max(1.0, min(zmax, 4.0))))
+    ax3.set_title(title + "\ntrack relative to the riser", fontsize=9)
+    fig.tight_layout()
+    fig.savefig(prefix + "_track3d.png", dpi=110)
+    print("wrote", prefix + "_track3d.png")
 
     contacts_path = os.path.join(os.path.dirname(os.path.dirname(path)),
                                  "riserWallContact", "contacts.dat")
