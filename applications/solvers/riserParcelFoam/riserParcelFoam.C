@@ -47,6 +47,7 @@ Usage
 #include "singlePhaseTransportModel.H"
 #include "basicKinematicCollidingCloud.H"
 #include "carrierFlow.H"
+#include "coreVector.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

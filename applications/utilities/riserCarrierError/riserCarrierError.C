@@ -37,19 +37,12 @@ Usage
 
 #include "fvCFD.H"
 #include "carrierFlow.H"
+#include "coreVector.H"
 #include "interpolationCellPoint.H"
 #include "Random.H"
 #include "OFstream.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-namespace
-{
-    Foam::vector exact(const riser::Vector& v)
-    {
-        return Foam::vector(v.x(), v.y(), v.z());
-    }
-}
 
 int main(int argc, char *argv[])
 {
@@ -90,7 +83,7 @@ int main(int argc, char *argv[])
     const scalar shift = flow.axisPosition(t - dt);
     auto lab = [shift](const point& x)
     {
-        return riser::Vector(x.x() + shift, x.y(), x.z());
+        return toCore(x + vector(shift, 0, 0));
     };
     const pointField points0(mesh.points());
 
@@ -106,7 +99,7 @@ int main(int argc, char *argv[])
         forAll(Ui, celli)
         {
             const point& c = mesh.C()[celli];
-            Ui[celli] = exact(flow.velocity(lab(c), time));
+            Ui[celli] = fromCore(flow.velocity(lab(c), time));
         }
         forAll(U.boundaryField(), patchi)
         {
@@ -115,7 +108,7 @@ int main(int argc, char *argv[])
             forAll(Up, facei)
             {
                 const point& c = Cf[facei];
-                Up[facei] = exact(flow.velocity(lab(c), time));
+                Up[facei] = fromCore(flow.velocity(lab(c), time));
             }
         }
     };
@@ -156,12 +149,12 @@ int main(int argc, char *argv[])
         const riser::Vector xc = lab(x);
 
         const scalar eU =
-            mag(Uinterp.interpolate(x, celli) - exact(flow.velocity(xc, t)))/uScale;
+            mag(Uinterp.interpolate(x, celli) - fromCore(flow.velocity(xc, t)))/uScale;
         const scalar eCurl =
-            mag(carrier.vorticityAt(x, celli) - exact(flow.vorticity(xc, t)))/curlScale;
+            mag(carrier.vorticityAt(x, celli) - fromCore(flow.vorticity(xc, t)))/curlScale;
         const scalar eA =
             mag(carrier.materialDerivativeAt(x, celli)
-              - exact(flow.materialDerivative(xc, t)))/aScale;
+              - fromCore(flow.materialDerivative(xc, t)))/aScale;
         sumU += sqr(eU); sumCurl += sqr(eCurl); sumA += sqr(eA);
         maxU = max(maxU, eU); maxCurl = max(maxCurl, eCurl); maxA = max(maxA, eA);
         ++n;

@@ -4,25 +4,9 @@
 \*---------------------------------------------------------------------------*/
 
 #include "carrierFlow.H"
+#include "coreVector.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-namespace Foam
-{
-namespace carrierFlowDetail
-{
-    inline riser::Vector toCore(const vector& v)
-    {
-        return riser::Vector(v.x(), v.y(), v.z());
-    }
-
-    inline vector fromCore(const riser::Vector& v)
-    {
-        return vector(v.x(), v.y(), v.z());
-    }
-}
-}
-
 
 template<class ParcelType>
 Foam::vector Foam::carrierFlow::interpolate
@@ -52,11 +36,11 @@ Foam::vector Foam::carrierFlow::velocity
     {
         return Uc;
     }
-    return carrierFlowDetail::fromCore
+    return fromCore
     (
         riser_->velocity
         (
-            carrierFlowDetail::toCore(p.position()),
+            toCore(p.position()),
             particleTime(p.stepFraction())
         )
     );
@@ -70,11 +54,11 @@ Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
     {
         return interpolate(vorticity_, p);
     }
-    return carrierFlowDetail::fromCore
+    return fromCore
     (
         riser_->vorticity
         (
-            carrierFlowDetail::toCore(p.position()),
+            toCore(p.position()),
             particleTime(p.stepFraction())
         )
     );
@@ -88,11 +72,11 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
     {
         return interpolate(materialDerivative_, p);
     }
-    return carrierFlowDetail::fromCore
+    return fromCore
     (
         riser_->materialDerivative
         (
-            carrierFlowDetail::toCore(p.position()),
+            toCore(p.position()),
             particleTime(p.stepFraction())
         )
     );

@@ -6,6 +6,7 @@
 #include "RiserWallContact.H"
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
+#include "coreVector.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -186,8 +187,6 @@ void Foam::RiserWallContact<CloudType>::collide()
     const vector Uwall(flow.riserVelocity(t), 0, 0);
     const scalar R = flow.radius();
 
-    auto toCore = [](const vector& v) { return riser::Vector(v.x(), v.y(), v.z()); };
-    auto fromCore = [](const riser::Vector& v) { return vector(v.x(), v.y(), v.z()); };
 
     for (parcelType& p : this->owner())
     {
