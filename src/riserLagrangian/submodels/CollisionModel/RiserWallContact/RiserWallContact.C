@@ -144,6 +144,14 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
     label nSub = 1, nNear = 0;
     for (const parcelType& p : this->owner())
     {
+        if (!(p.d() < flow.diameter()))
+        {
+            FatalErrorInFunction
+                << "particle " << p.origId() << " of diameter " << p.d()
+                << " is not smaller than the riser diameter D = "
+                << flow.diameter() << " (constant/riserProperties)"
+                << exit(FatalError);
+        }
         const point x = p.position();
         const scalar h = Foam::sqrt(sqr(x.x() - xc) + sqr(x.y()));
         const scalar speed = mag(p.U()) + wallSpeedMax;
