@@ -113,13 +113,10 @@ public:
         g_.push_back(g0);
     }
 
-    //- Steps taken: the current time is steps() h.
-    long steps() const { return n_; }
-
     //- History values held (memory per particle, in values of Value).
     long stored() const { return long(g_.size()) + (windowed() ? Tail::m : 0); }
 
-    //- H at the current time (steps() >= 1).
+    //- H at the current time (after at least one push).
     Value value() const
     {
         const long n = n_;

@@ -67,10 +67,6 @@ public:
     double time() const { return t_; }
     const Value& velocity() const { return v_; }
     const Value& acceleration() const { return a_; }
-    const HistoryIntegral<Value>& history() const { return history_; }
-
-    //- Basset force at the current time (after the first step)
-    Value historyForce() const { return sys_.historyCoefficient()*history_.value(); }
 
     void step()
     {
