@@ -45,7 +45,7 @@ Usage
 #include "fvCFD.H"
 #include "dynamicFvMesh.H"
 #include "singlePhaseTransportModel.H"
-#include "basicKinematicCollidingCloud.H"
+#include "basicRiserCloud.H"
 #include "carrierFlow.H"
 #include "coreVector.H"
 

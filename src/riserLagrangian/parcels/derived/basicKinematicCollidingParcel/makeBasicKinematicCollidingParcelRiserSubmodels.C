@@ -3,18 +3,18 @@
   License: GPL-3.0-or-later
 
 Description
-    Registers the riser cloud function objects for the stock colliding cloud
-    basicKinematicCollidingCloud.
+    Registers the riser submodels for the stock colliding cloud
+    basicKinematicCollidingCloud, so that icoUncoupledKinematicParcelFoam,
+    icoUncoupledKinematicParcelDyMFoam and DPMFoam find them after
+    libs ("libriserLagrangian.so"); in system/controlDict.
 
 \*---------------------------------------------------------------------------*/
 
 #include "basicKinematicCollidingCloud.H"
-#include "ParticleForceFields.H"
-#include "RiserParticleTable.H"
+#include "makeRiserSubmodels.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-makeCloudFunctionObjectType(ParticleForceFields, basicKinematicCollidingCloud);
-makeCloudFunctionObjectType(RiserParticleTable, basicKinematicCollidingCloud);
+makeRiserSubmodels(basicKinematicCollidingCloud);
 
 // ************************************************************************* //

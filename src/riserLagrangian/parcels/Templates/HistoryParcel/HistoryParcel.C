@@ -1,0 +1,80 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "HistoryParcel.H"
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::List<Foam::vector>
+Foam::HistoryParcel<ParcelType>::windowList() const
+{
+    List<vector> window(history_.window.size());
+    forAll(window, j)
+    {
+        window[j] = history_.at(j);
+    }
+    return window;
+}
+
+
+template<class ParcelType>
+void Foam::HistoryParcel<ParcelType>::setHistory
+(
+    const label steps,
+    const vector& slip0,
+    const List<vector>& window,
+    const List<vector>& tail
+)
+{
+    if (tail.size() != historyState::m)
+    {
+        FatalErrorInFunction
+            << "historyTail of a parcel holds " << tail.size()
+            << " values instead of " << label(historyState::m)
+            << exit(FatalError);
+    }
+    history_ = emptyHistory();
+    history_.steps = steps;
+    history_.slip0 = slip0;
+    history_.window.assign(window.begin(), window.end());
+    std::copy(tail.begin(), tail.end(), history_.tail.begin());
+}
+
+
+template<class ParcelType>
+void Foam::HistoryParcel<ParcelType>::transformProperties(const tensor& T)
+{
+    ParcelType::transformProperties(T);
+
+    history_.slip0 = transform(T, history_.slip0);
+    for (vector& g : history_.window)
+    {
+        g = transform(T, g);
+    }
+    for (vector& s : history_.tail)
+    {
+        s = transform(T, s);
+    }
+    UNode_ = transform(T, UNode_);
+    historyKnown_ = transform(T, historyKnown_);
+}
+
+
+template<class ParcelType>
+void Foam::HistoryParcel<ParcelType>::transformProperties
+(
+    const vector& separation
+)
+{
+    ParcelType::transformProperties(separation);
+}
+
+
+// * * * * * * * * * * * * * * * * * * * IO  * * * * * * * * * * * * * * * * //
+
+#include "HistoryParcelIO.C"
+
+// ************************************************************************* //

@@ -1,0 +1,172 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "HistoryParcel.H"
+#include "IOstreams.H"
+#include "IOField.H"
+#include "CompactIOField.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::string Foam::HistoryParcel<ParcelType>::propertyList_ =
+    Foam::HistoryParcel<ParcelType>::propertyList();
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::HistoryParcel<ParcelType>::HistoryParcel
+(
+    const polyMesh& mesh,
+    Istream& is,
+    bool readFields,
+    bool newFormat
+)
+:
+    ParcelType(mesh, is, readFields, newFormat),
+    history_(emptyHistory()),
+    UNode_(Zero),
+    historyKnown_(Zero)
+{
+    if (readFields)
+    {
+        label steps;
+        vector slip0;
+        List<vector> window, tail;
+        is >> steps >> slip0 >> window >> tail >> UNode_ >> historyKnown_;
+        setHistory(steps, slip0, window, tail);
+    }
+
+    is.check(FUNCTION_NAME);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class ParcelType>
+template<class CloudType>
+void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
+{
+    const bool valid = c.size();
+
+    ParcelType::readFields(c);
+
+    IOField<label> steps(c.fieldIOobject("historySteps", IOobject::MUST_READ), valid);
+    c.checkFieldIOobject(c, steps);
+
+    IOField<vector> slip0(c.fieldIOobject("historySlip0", IOobject::MUST_READ), valid);
+    c.checkFieldIOobject(c, slip0);
+
+    vectorFieldCompactIOField window
+    (
+        c.fieldIOobject("historyWindow", IOobject::MUST_READ),
+        valid
+    );
+    c.checkFieldFieldIOobject(c, window);
+
+    vectorFieldCompactIOField tail
+    (
+        c.fieldIOobject("historyTail", IOobject::MUST_READ),
+        valid
+    );
+    c.checkFieldFieldIOobject(c, tail);
+
+    label i = 0;
+    for (HistoryParcel<ParcelType>& p : c)
+    {
+        p.setHistory(steps[i], slip0[i], window[i], tail[i]);
+        // written at the end of a step: the last history node is now
+        p.UNode_ = p.U();
+        ++i;
+    }
+}
+
+
+template<class ParcelType>
+template<class CloudType>
+void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
+{
+    ParcelType::writeFields(c);
+
+    const label np = c.size();
+    const bool valid = np;
+
+    IOField<label> steps(c.fieldIOobject("historySteps", IOobject::NO_READ), np);
+    IOField<vector> slip0(c.fieldIOobject("historySlip0", IOobject::NO_READ), np);
+    vectorFieldCompactIOField window
+    (
+        c.fieldIOobject("historyWindow", IOobject::NO_READ),
+        np
+    );
+    vectorFieldCompactIOField tail
+    (
+        c.fieldIOobject("historyTail", IOobject::NO_READ),
+        np
+    );
+
+    label i = 0;
+    for (const HistoryParcel<ParcelType>& p : c)
+    {
+        steps[i] = p.history_.steps;
+        slip0[i] = p.history_.slip0;
+        window[i] = p.windowList();
+        tail[i] = List<vector>(p.history_.tail.begin(), p.history_.tail.end());
+        ++i;
+    }
+
+    steps.write(valid);
+    slip0.write(valid);
+    window.write(valid);
+    tail.write(valid);
+}
+
+
+template<class ParcelType>
+void Foam::HistoryParcel<ParcelType>::writeProperties
+(
+    Ostream& os,
+    const wordRes& filters,
+    const word& delim,
+    const bool namesOnly
+) const
+{
+    ParcelType::writeProperties(os, filters, delim, namesOnly);
+
+    ParcelType::writeProperty
+    (
+        os, "historySteps", label(history_.steps), namesOnly, delim, filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "historySlip0", history_.slip0, namesOnly, delim, filters
+    );
+}
+
+
+// * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
+
+template<class ParcelType>
+Foam::Ostream& Foam::operator<<
+(
+    Ostream& os,
+    const HistoryParcel<ParcelType>& p
+)
+{
+    os  << static_cast<const ParcelType&>(p)
+        << token::SPACE << label(p.history_.steps)
+        << token::SPACE << p.history_.slip0
+        << token::SPACE << p.windowList()
+        << token::SPACE
+        << List<vector>(p.history_.tail.begin(), p.history_.tail.end())
+        << token::SPACE << p.UNode_
+        << token::SPACE << p.historyKnown_;
+
+    os.check(FUNCTION_NAME);
+    return os;
+}
+
+
+// ************************************************************************* //

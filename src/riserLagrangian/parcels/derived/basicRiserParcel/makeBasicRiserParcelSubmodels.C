@@ -1,0 +1,41 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+
+Description
+    Registers, for the riser cloud basicRiserCloud, the stock kinematic
+    submodels (so that a riser case can use any of them), the riser
+    submodels, and the Basset force, which needs the history parcels.
+
+\*---------------------------------------------------------------------------*/
+
+#include "basicRiserCloud.H"
+
+#include "makeParcelCloudFunctionObjects.H"
+#include "makeParcelForces.H"
+#include "makeParcelDispersionModels.H"
+#include "makeParcelInjectionModels.H"
+#include "makeParcelCollisionModels.H"
+#include "makeParcelPatchInteractionModels.H"
+#include "makeParcelStochasticCollisionModels.H"
+#include "makeParcelSurfaceFilmModels.H"
+
+#include "makeRiserSubmodels.H"
+#include "RiserBassetForce.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+makeParcelCloudFunctionObjects(basicRiserCloud);
+
+makeParcelForces(basicRiserCloud);
+makeParcelDispersionModels(basicRiserCloud);
+makeParcelInjectionModels(basicRiserCloud);
+makeParcelCollisionModels(basicRiserCloud);
+makeParcelPatchInteractionModels(basicRiserCloud);
+makeParcelStochasticCollisionModels(basicRiserCloud);
+makeParcelSurfaceFilmModels(basicRiserCloud);
+
+makeRiserSubmodels(basicRiserCloud);
+makeParticleForceModelType(RiserBassetForce, basicRiserCloud);
+
+// ************************************************************************* //

@@ -1,0 +1,263 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "RiserBassetForce.H"
+#include "checkedEntry.H"
+#include "particleForceEvaluation.H"
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
+(
+    const dictionary& coeffs,
+    const scalar deltaT
+)
+{
+    const riser::HistoryMethod method =
+        coeffs.found("method")
+      ? checkedEntry::choice<riser::HistoryMethod>
+        (
+            coeffs, "method",
+            {{"windowTail", riser::HistoryMethod::windowTail},
+             {"fullHistory", riser::HistoryMethod::fullHistory}}
+        )
+      : riser::HistoryMethod::windowTail;
+
+    const riser::HistoryTail tail =
+        coeffs.found("tail")
+      ? checkedEntry::choice<riser::HistoryTail>
+        (
+            coeffs, "tail",
+            {{"vanHinsberg2011", riser::HistoryTail::vanHinsberg2011},
+             {"leastSquares", riser::HistoryTail::leastSquares}}
+        )
+      : riser::HistoryTail::vanHinsberg2011;
+
+    label window = 0;
+    if (method == riser::HistoryMethod::windowTail)
+    {
+        // at least two flow steps: the window holds the slab that leaves it
+        const scalar windowTime =
+            checkedEntry::inRange(coeffs, "windowTime", 2*deltaT, true, VGREAT, true);
+        window = label(std::lround(windowTime/deltaT));
+    }
+    return riser::HistoryKernel(method, deltaT, window, tail);
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar muc
+) const
+{
+    const scalar d = p.d();
+    const scalar rhoc = td.rhoc();
+    scalar CH = riser::classicalBassetCoefficient;
+    if (coefficient_ == riser::BassetModel::michaelidesRoig)
+    {
+        const scalar Re =
+            rhoc*d*mag(carrier_.velocity(p, td.Uc()) - p.U())/muc;
+        CH = riser::bassetCoefficient
+        (
+            coefficient_, Re, muc, rhoc, 0.5*d, frequency_
+        );
+    }
+    return CH*0.25*d*d*std::sqrt(constant::mathematical::pi*rhoc*muc);
+}
+
+
+template<class CloudType>
+void Foam::RiserBassetForce<CloudType>::prepare()
+{
+    const Time& time = this->mesh().time();
+    if (time.timeIndex() == preparedIndex_)
+    {
+        return;
+    }
+    preparedIndex_ = time.timeIndex();
+
+    const scalar h = kernel_.step();
+    if (mag(time.deltaTValue() - h) > 1e-10*h)
+    {
+        FatalErrorInFunction
+            << "riserBasset: the history's step is the flow step deltaT = "
+            << h << " s, set at start; deltaT is now " << time.deltaTValue()
+            << " s. Keep deltaT constant (adjustTimeStep no;)."
+            << exit(FatalError);
+    }
+
+    for (auto& p : this->owner())
+    {
+        if (p.historyStarted())
+        {
+            p.historyKnown() = kernel_.knownPart(p.history());
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserBassetForce<CloudType>::advance()
+{
+    const Time& time = this->mesh().time();
+    if (time.timeIndex() == advancedIndex_)
+    {
+        return;
+    }
+    advancedIndex_ = time.timeIndex();
+
+    CloudType& cloud = this->owner();
+    typename CloudType::parcelType::trackingData td(cloud);
+    const scalar dt = time.deltaTValue();
+
+    for (auto& p : cloud)
+    {
+        const endOfStep<typename CloudType::parcelType> done(p);
+        if (p.historyStarted())
+        {
+            const vector a = (p.U() - p.UNode())/dt;
+            kernel_.push(p.history(), vector(carrier_.materialDerivative(p) - a));
+        }
+        else
+        {
+            p.setCellValues(cloud, td);
+            const vector w0 = carrier_.velocity(p, td.Uc()) - p.U();
+            p.history() = kernel_.start(w0, vector(Zero));
+        }
+        p.UNode() = p.U();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RiserBassetForce<CloudType>::RiserBassetForce
+(
+    CloudType& owner,
+    const fvMesh& mesh,
+    const dictionary& dict
+)
+:
+    ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
+    carrier_(carrierFlow::New(mesh)),
+    coefficient_
+    (
+        checkedEntry::choice<riser::BassetModel>
+        (
+            this->coeffs(), "coefficient",
+            {{"classical", riser::BassetModel::classical},
+             {"michaelidesRoig", riser::BassetModel::michaelidesRoig}}
+        )
+    ),
+    frequency_
+    (
+        coefficient_ == riser::BassetModel::michaelidesRoig
+      ? carrier_.riserMotion().frequency()
+      : 0
+    ),
+    kernel_(readKernel(this->coeffs(), mesh.time().deltaTValue())),
+    preparedIndex_(-1),
+    advancedIndex_(-1)
+{}
+
+
+template<class CloudType>
+Foam::RiserBassetForce<CloudType>::RiserBassetForce
+(
+    const RiserBassetForce<CloudType>& f
+)
+:
+    ParticleForce<CloudType>(f),
+    carrier_(f.carrier_),
+    coefficient_(f.coefficient_),
+    frequency_(f.frequency_),
+    kernel_(f.kernel_),
+    preparedIndex_(f.preparedIndex_),
+    advancedIndex_(f.advancedIndex_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RiserBassetForce<CloudType>::cacheFields(const bool store)
+{
+    // the material derivative is held from before prepare() until after
+    // advance(), which needs it at the end of the step
+    if (store)
+    {
+        carrier_.cacheMaterialDerivative
+        (
+            true, this->owner().solution().interpolationSchemes()
+        );
+        prepare();
+    }
+    else
+    {
+        advance();
+        carrier_.cacheMaterialDerivative
+        (
+            false, this->owner().solution().interpolationSchemes()
+        );
+    }
+}
+
+
+template<class CloudType>
+Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar dt,
+    const scalar mass,
+    const scalar Re,
+    const scalar muc
+) const
+{
+    if (!p.historyStarted())
+    {
+        return forceSuSp(Zero, 0);
+    }
+    const scalar KH = historyCoefficient(p, td, td.muc());
+    if (advancedIndex_ == this->mesh().time().timeIndex())
+    {
+        // after the step (output): the whole force at the end of the step
+        // (none for a history that starts now)
+        return forceSuSp
+        (
+            p.history().steps > 0 ? KH*kernel_.value(p.history()) : vector(Zero),
+            0
+        );
+    }
+    return forceSuSp
+    (
+        KH*(p.historyKnown() + kernel_.newestWeight()*carrier_.materialDerivative(p)),
+        0
+    );
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserBassetForce<CloudType>::massAdd
+(
+    const typename CloudType::parcelType& p,
+    const typename CloudType::parcelType::trackingData& td,
+    const scalar mass
+) const
+{
+    if (!p.historyStarted() || advancedIndex_ == this->mesh().time().timeIndex())
+    {
+        return 0;
+    }
+    return historyCoefficient(p, td, td.muc())*kernel_.newestWeight();
+}
+
+
+// ************************************************************************* //
