@@ -208,6 +208,25 @@ public:
     //- Weight of the newest value at the next time: (4/3) sqrt(h)
     double newestWeight() const { return 4.0/3.0*sqrtH_; }
 
+    //- A particle released at the start of a step with slip w0, whose
+    //  acceleration in that first step is not known beforehand (a cloud's
+    //  step): g is taken constant over the step, equal to its mean g_1, so
+    //      H(t_1) = w0/sqrt(h) + 2 sqrt(h) g_1
+    //  (exact for constant g); firstKnownPart and firstWeight are the two
+    //  parts, released() the state after that step.
+    template<class Value>
+    Value firstKnownPart(const Value& w0) const { return w0*(1.0/sqrtH_); }
+
+    double firstWeight() const { return 2.0*sqrtH_; }
+
+    template<class Value>
+    HistoryState<Value> released(const Value& w0, const Value& g1) const
+    {
+        HistoryState<Value> s = start(w0, g1);
+        push(s, g1);
+        return s;
+    }
+
     //- H at the current time (after at least one push)
     template<class Value>
     Value value(const HistoryState<Value>& s) const

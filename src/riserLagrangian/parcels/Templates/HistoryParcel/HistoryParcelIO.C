@@ -29,7 +29,8 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
     ParcelType(mesh, is, readFields, newFormat),
     history_(emptyHistory()),
     UNode_(Zero),
-    historyKnown_(Zero)
+    historyKnown_(Zero),
+    injectionPending_(false)
 {
     if (readFields)
     {
@@ -54,7 +55,17 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 
     ParcelType::readFields(c);
 
-    IOField<label> steps(c.fieldIOobject("historySteps", IOobject::MUST_READ), valid);
+    // clouds written without histories (another solver, or initial
+    // particles): each particle starts its history at its next step
+    IOobject stepsIO(c.fieldIOobject("historySteps", IOobject::MUST_READ));
+    if (valid && !stepsIO.typeHeaderOk<IOField<label>>(true))
+    {
+        Info<< "    " << c.name() << ": no Basset histories written at "
+            << c.time().timeName() << "; they start at the next step" << endl;
+        return;
+    }
+
+    IOField<label> steps(stepsIO, valid);
     c.checkFieldIOobject(c, steps);
 
     IOField<vector> slip0(c.fieldIOobject("historySlip0", IOobject::MUST_READ), valid);

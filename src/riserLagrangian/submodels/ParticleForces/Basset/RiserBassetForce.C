@@ -119,13 +119,19 @@ void Foam::RiserBassetForce<CloudType>::advance()
     for (auto& p : cloud)
     {
         const endOfStep<typename CloudType::parcelType> done(p);
+        const vector g =
+            carrier_.materialDerivative(p) - (p.U() - p.UNode())/dt;
         if (p.historyStarted())
         {
-            const vector a = (p.U() - p.UNode())/dt;
-            kernel_.push(p.history(), vector(carrier_.materialDerivative(p) - a));
+            kernel_.push(p.history(), g);
+        }
+        else if (p.historyReleased())
+        {
+            p.history() = kernel_.released(p.history().slip0, g);
         }
         else
         {
+            // never evaluated in this step: start now, without a slope
             p.setCellValues(cloud, td);
             const vector w0 = carrier_.velocity(p, td.Uc()) - p.U();
             p.history() = kernel_.start(w0, vector(Zero));
@@ -221,11 +227,24 @@ Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
+    const scalar KH = historyCoefficient(p, td, td.muc());
     if (!p.historyStarted())
     {
-        return forceSuSp(Zero, 0);
+        // released in this step: the history starts at the step's start
+        if (!p.historyReleased())
+        {
+            p.recordRelease(carrier_.velocity(p, td.Uc()) - p.U());
+        }
+        return forceSuSp
+        (
+            KH*
+            (
+                kernel_.firstKnownPart(p.history().slip0)
+              + kernel_.firstWeight()*carrier_.materialDerivative(p)
+            ),
+            0
+        );
     }
-    const scalar KH = historyCoefficient(p, td, td.muc());
     if (advancedIndex_ == this->mesh().time().timeIndex())
     {
         // after the step (output): the whole force at the end of the step
@@ -252,11 +271,13 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::massAdd
     const scalar mass
 ) const
 {
-    if (!p.historyStarted() || advancedIndex_ == this->mesh().time().timeIndex())
+    if (advancedIndex_ == this->mesh().time().timeIndex())
     {
         return 0;
     }
-    return historyCoefficient(p, td, td.muc())*kernel_.newestWeight();
+    return
+        historyCoefficient(p, td, td.muc())
+       *(p.historyStarted() ? kernel_.newestWeight() : kernel_.firstWeight());
 }
 
 
