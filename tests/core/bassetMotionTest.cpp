@@ -13,41 +13,10 @@ using namespace riser;
 using oracle::cplx;
 using oracle::faddeeva;
 
+using oracle::StokesSphere;
+using oracle::settlingClosedForm;
+
 namespace {
-
-// A sphere of radius a, density ratio beta = rho_p/rho_f, in water, with
-// Stokes drag, added mass C_A = 1/2, classical Basset C_H = 6, buoyant
-// weight, and (for a moving carrier) the fluid-stress force.
-struct StokesSphere
-{
-    using Value = double;
-    double a, rhoP, rhoF = 1000.0, mu = 1e-3, g = 9.81;
-    double U = 0.0, omega = 0.0;         // carrier u = U cos(omega t)
-
-    double mp() const { return rhoP*4.0/3.0*M_PI*a*a*a; }
-    double mf() const { return rhoF*4.0/3.0*M_PI*a*a*a; }
-    double mass() const { return mp(); }
-    double addedMass() const { return 0.5*mf(); }
-    double historyCoefficient() const { return 6.0*a*a*std::sqrt(M_PI*rhoF*mu); }
-    double carrierVelocity(double t) const { return U*std::cos(omega*t); }
-    double carrierAcceleration(double t) const { return -U*omega*std::sin(omega*t); }
-    double force(double v, double t) const
-    {
-        return 6.0*M_PI*mu*a*(carrierVelocity(t) - v) + (mp() - mf())*g
-             + mf()*carrierAcceleration(t);
-    }
-};
-
-// Settling from rest in quiescent fluid: the closed form of
-// tests/oracles/bassetClosedForms.hpp with the Stokes drag 6 pi mu a.
-double settlingClosedForm(const StokesSphere& s, double t)
-{
-    const double M = s.mp() + 0.5*s.mf();
-    const double alpha = 6.0*M_PI*s.mu*s.a/M;
-    const double gamma = 6.0*M_PI*s.a*s.a*std::sqrt(s.rhoF*s.mu)/M;
-    const double G = (s.mp() - s.mf())*s.g/M;
-    return oracle::settlingFromRest(alpha, gamma, G, t);
-}
 
 double settlingError(HistoryMethod method, double h, long window, double tEnd,
                      const StokesSphere& s)

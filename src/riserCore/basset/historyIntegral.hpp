@@ -176,13 +176,9 @@ public:
                     : -std::expm1(-x) - x*std::exp(-x))/(c*c);
             }
         }
-        // interior weights W_k, 0 < k: a table over the window (or a first
-        // stretch of the full history, the rest computed when needed)
-        interior_.resize(windowed() ? N_ + 1 : 4096);
-        for (long k = 1; k < long(interior_.size()); ++k)
-        {
-            interior_[k] = sqrtH_*historyWeight(k, k + 1);
-        }
+        // interior weights W_k, 0 < k: a table over the window, or over the
+        // full history, grown with the longest history pushed
+        growTable(windowed() ? N_ + 1 : 64);
     }
 
     HistoryMethod method() const { return method_; }
@@ -263,6 +259,10 @@ public:
         else
         {
             s.window.push_back(g);
+            if (long(s.window.size()) > long(interior_.size()))
+            {
+                growTable(2*long(s.window.size()));
+            }
         }
         ++s.steps;
     }
@@ -289,6 +289,19 @@ private:
         for (int i = 0; i < m; ++i)
         {
             tail[i] = tail[i]*decay_[i] + gb*I0_[i] + (ga - gb)*(I1_[i]/h_);
+        }
+    }
+
+    //- Extend the interior-weight table to size entries (a cache: the
+    //  kernel is const to its users, and one kernel is not shared between
+    //  threads)
+    void growTable(long size) const
+    {
+        const long old = std::max(1L, long(interior_.size()));
+        interior_.resize(size);
+        for (long k = old; k < size; ++k)
+        {
+            interior_[k] = sqrtH_*historyWeight(k, k + 1);
         }
     }
 
@@ -326,7 +339,7 @@ private:
     double h_;
     double sqrtH_;
     long N_;
-    std::vector<double> interior_;
+    mutable std::vector<double> interior_;
     std::array<double, m> decay_{}, amplitude_{}, I0_{}, I1_{};
 };
 

@@ -22,10 +22,13 @@
 // iteration (to a relative change of 1e-14 or 50 iterations).
 //
 // For comparison the newest weight can be lagged instead (explicit: it uses
-// the previous acceleration); that is unstable when K_H c > m + m_A, that is
-// for h > pi a^2 (beta + 1/2)^2 / (36 nu) - light particles (beta = rho_p/rho_f
-// small) at any practical step (tested).
-//
+// the previous acceleration). The previous value then enters twice (its own
+// weight and the lagged newest one), and the scheme is unstable above about
+// 0.43 h_c, where h_c = pi a^2 (beta + 1/2)^2 / (36 nu) is the step at which
+// K_H (4/3) sqrt(h) = m + m_A (beta = rho_p/rho_f; measured in
+// validation/basset: bounded at 0.42 h_c, growing at 0.45 h_c). Light
+// particles have a small h_c: for them only the implicit weight is usable.
+
 // The step h is constant (the history's grid). The history's first value
 // needs dw/dt at t = 0: the System must start without slip (w(0) = 0) or
 // accept the initial-slip term, which makes the Basset force infinite at
@@ -52,7 +55,8 @@ public:
 
     HistoryStepper(const System& system, HistoryMethod method, double h,
                    long window, const Value& v0, double t0 = 0.0,
-                   NewestHistoryWeight newest = NewestHistoryWeight::implicit)
+                   NewestHistoryWeight newest = NewestHistoryWeight::implicit,
+                   HistoryTail tail = HistoryTail::vanHinsberg2011)
     :
         sys_(system),
         implicit_(newest == NewestHistoryWeight::implicit),
@@ -61,7 +65,7 @@ public:
         v_(v0),
         a_(initialAcceleration(system, v0, t0)),
         history_(method, h, window, system.carrierVelocity(t0) - v0,
-                 system.carrierAcceleration(t0) - a_)
+                 system.carrierAcceleration(t0) - a_, tail)
     {}
 
     double time() const { return t_; }
