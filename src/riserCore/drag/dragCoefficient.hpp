@@ -91,6 +91,13 @@ inline double dragCoefficientTimesRe(DragLaw law, double Re, const WallFactors& 
     return dragCoefficient(law, Re, w)*Re;
 }
 
+//- The drag force's factor: F_D = (pi/8) d^2 rho C_D |w| w = c w with
+//  c = (pi d mu / 8) C_D Re_p, Re_p = rho d |w| / mu.
+inline double dragFactor(DragLaw law, const WallFactors& w, double d, double mu, double Re)
+{
+    return M_PI*d*mu/8.0*dragCoefficientTimesRe(law, Re, w);
+}
+
 } // namespace riser
 
 #endif

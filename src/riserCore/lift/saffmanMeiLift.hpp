@@ -51,6 +51,19 @@ inline double saffmanMeiCoefficient(double Rep, double Res)
     return saffmanMeiCoefficientTimesSqrtRes(Rep, Res)/std::sqrt(Res);
 }
 
+//- The force's prefactor: F_L = c (w x Omega) with
+//  c = (pi/8) d^2 sqrt(rho mu / |Omega|) [C_L sqrt(Re_s)], for slip speed
+//  |w| >= 0 and vorticity magnitude |Omega| >= 0 (c = 0 without vorticity).
+inline double saffmanMeiLiftPrefactor(double d, double rho, double mu,
+                                      double slip, double magOmega)
+{
+    if (magOmega <= 0.0) return 0.0;
+    const double Rep = rho*slip*d/mu;
+    const double Res = rho*d*d*magOmega/mu;
+    return M_PI/8.0*d*d*std::sqrt(rho*mu/magOmega)
+          *saffmanMeiCoefficientTimesSqrtRes(Rep, Res);
+}
+
 } // namespace riser
 
 #endif

@@ -53,20 +53,9 @@ Foam::forceSuSp Foam::RiserSaffmanMeiLiftForce<CloudType>::calcCoupled
 ) const
 {
     const vector Omega = carrier_.vorticity(p);
-    const scalar magOmega = mag(Omega);
-    if (magOmega < VSMALL)
-    {
-        return forceSuSp(Zero, 0);
-    }
     const vector w = carrier_.velocity(p, td.Uc()) - p.U();
-    const scalar rho = td.rhoc(), d = p.d();
-    const scalar Rep = rho*mag(w)*d/muc;
-    const scalar Res = rho*sqr(d)*magOmega/muc;
-
-    // (pi d^3/8) rho C_L = (pi d^2/8) sqrt(rho mu/|Omega|) [C_L sqrt(Re_s)]
     const scalar coeff =
-        constant::mathematical::pi/8*sqr(d)*sqrt(rho*muc/magOmega)
-       *riser::saffmanMeiCoefficientTimesSqrtRes(Rep, Res);
+        riser::saffmanMeiLiftPrefactor(p.d(), td.rhoc(), muc, mag(w), mag(Omega));
 
     return forceSuSp(coeff*(w ^ Omega), 0);
 }

@@ -84,21 +84,16 @@ Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
 ) const
 {
     const riser::WallFactors& factors = wallFactors(p.d());
-    const scalar Sp0 = constant::mathematical::pi*p.d()*muc/8.0;
 
-    // F = (pi d^2/8) rho C_D |w| w = (pi d mu / 8) C_D Re_p w = Sp w
+    // F = (pi d^2/8) rho C_D |w| w = Sp w
     if (!carrier_.exact())
     {
-        return forceSuSp
-        (
-            Zero,
-            Sp0*riser::dragCoefficientTimesRe(law_, Re, factors)
-        );
+        return forceSuSp(Zero, riser::dragFactor(law_, factors, p.d(), muc, Re));
     }
 
     const vector u = carrier_.velocity(p, td.Uc());
     const scalar ReExact = td.rhoc()*mag(u - p.U())*p.d()/muc;
-    const scalar Sp = Sp0*riser::dragCoefficientTimesRe(law_, ReExact, factors);
+    const scalar Sp = riser::dragFactor(law_, factors, p.d(), muc, ReExact);
     return forceSuSp(Sp*(u - td.Uc()), Sp);
 }
 
