@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserWallContact.H"
-#include "checkedEntry.H"
+#include "modelEntries.H"
 #include "cloudOutputFile.H"
 #include "coreVector.H"
 
@@ -13,39 +13,12 @@
 template<class CloudType>
 riser::HertzMindlin Foam::RiserWallContact<CloudType>::readLaw() const
 {
-    using namespace checkedEntry;
-
-    const dictionary& coeffs = this->coeffDict();
-    const dictionary& constProps = this->owner().constProps().dict();
-    const dictionary& wall = coeffs.subDict("wall");
-
-    const riser::ElasticMaterial particle
-    (
-        positive(constProps, "youngsModulus"),
-        inRange(constProps, "poissonsRatio", -1, false, 0.5, false)
-    );
-    const riser::ElasticMaterial wallMaterial
-    (
-        positive(wall, "youngsModulus"),
-        inRange(wall, "poissonsRatio", -1, false, 0.5, false)
-    );
-
     return riser::HertzMindlin
     (
-        riser::HertzMindlinParameters
-        {
-            particle,
-            wallMaterial,
-            inRange(coeffs, "normalRestitution", 0, false, 1, true),
-            inRange(coeffs, "tangentialRestitution", 0, false, 1, true),
-            nonNegative(coeffs, "friction"),
-            choice<riser::NormalForceFloor>
-            (
-                coeffs, "normalForce",
-                {{"tensionAllowed", riser::NormalForceFloor::tensionAllowed},
-                 {"noTension", riser::NormalForceFloor::noTension}}
-            )
-        }
+        modelEntries::contactParameters
+        (
+            this->coeffDict(), this->owner().constProps().dict()
+        )
     );
 }
 

@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "WallCorrectedDragForce.H"
-#include "checkedEntry.H"
+#include "modelEntries.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -40,15 +40,7 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
     carrier_(carrierFlow::New(mesh)),
-    law_
-    (
-        checkedEntry::choice<riser::DragLaw>
-        (
-            this->coeffs(), "law",
-            {{"paper", riser::DragLaw::paper},
-             {"continuous", riser::DragLaw::continuous}}
-        )
-    ),
+    law_(modelEntries::dragLaw(this->coeffs())),
     pipeDiameter_(checkedEntry::positive(this->coeffs(), "pipeDiameter")),
     lastDiameter_(-1),
     lastFactors_(0)

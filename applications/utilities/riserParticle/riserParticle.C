@@ -1,0 +1,472 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+
+Application
+    riserParticle
+
+Group
+    riserFoam/utilities
+
+Description
+    The mesh-free engine: runs a riser case directory - the dictionaries
+    riserParcelFoam reads (riserScene.H) - without a mesh, particle by
+    particle, in the lab frame, calling the core laws directly
+    (riser::RiserParticleLaw), and writes the table riserParticleTable
+    writes, to postProcessing/riserParticle/particles.dat (the same columns;
+    riserFrame's column is zero, the lab frame needing none), and the
+    contacts to postProcessing/riserParticle/contacts.dat.
+
+    Integrator (system/riserParticleDict, optional; -integrator overrides):
+    \verbatim
+    integrator      adaptive;       // adaptive | paper
+    adaptiveCoeffs
+    {
+        tolerance   1e-8;           // relative, in (0, 1)
+        maxStep     5e-4;           // [s], default deltaT
+    }
+    paperCoeffs
+    {
+        flowStep    1e-4;           // [s], default 1e-3 D/u_cm (the paper's)
+        contactStep 1e-7;           // [s], default 1e-6 D/u_cm
+        eps         1e-3;           // contact when the gap < eps d
+    }
+    \endverbatim
+
+    Sweeps (-sweep): the case's first release over a grid of riser
+    amplitudes and frequencies, in parallel over the cores, one row per case
+    in postProcessing/riserParticle/sweep.dat, in grid order (deterministic).
+    system/riserSweepDict:
+    \verbatim
+    A           (0.05 0.1 0.15);    // [m], each >= 0
+    f           (0.5 1 3);          // [Hz], each > 0
+    periods     20;                 // riser periods per case, > 0
+    liftTime    10;                 // [s] lifting distance after this time
+    \endverbatim
+    The release is taken relative to the riser (position from the axis,
+    velocity relative to the riser's), so that each case starts as the
+    case's particle does in its own riser. Columns: A f status lift
+    maxRelativeLateralSpeed meanVerticalSpeed contactsPerPeriodLeft
+    contactsPerPeriodRight regime, regime one of noContact, onceFirstPeriod,
+    firstPeriodsOnly, bothWallsEveryPeriod, other (MODEL.md section 4); a
+    case that fails says so in its status and the others go on.
+
+Usage
+    riserParticle [-integrator adaptive|paper] [-sweep]
+
+\*---------------------------------------------------------------------------*/
+
+#include "argList.H"
+#include "OFstream.H"
+#include "riserScene.H"
+
+#include <atomic>
+#include <chrono>
+#include <memory>
+#include <stdexcept>
+#include <thread>
+
+using namespace Foam;
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace
+{
+
+//- One of the two integrators, as chosen
+struct integratorChoice
+{
+    word name;
+    std::unique_ptr<riser::AdaptiveScheme> adaptive;
+    std::unique_ptr<riser::PaperScheme> paper;
+
+    riser::IntegratorStats run
+    (
+        const riser::RiserParticleLaw& law, double t0, const riser::ParticleState& s,
+        double tEnd, double every, const riser::Observer& obs
+    ) const
+    {
+        return adaptive
+            ? adaptive->run(law, t0, s, tEnd, every, obs)
+            : paper->run(law, t0, s, tEnd, every, obs);
+    }
+};
+
+
+integratorChoice readIntegrator(const Time& runTime, const argList& args, const riserScene& s)
+{
+    using namespace checkedEntry;
+    dictionary dict;
+    IOobject io
+    (
+        "riserParticleDict", runTime.system(), runTime,
+        IOobject::MUST_READ, IOobject::NO_WRITE, false
+    );
+    if (io.typeHeaderOk<IOdictionary>(true))
+    {
+        dict = IOdictionary(io);
+    }
+    integratorChoice c;
+    c.name = args.getOrDefault<word>
+    (
+        "integrator", dict.lookupOrDefault<word>("integrator", "adaptive")
+    );
+    const scalar unit = s.riser.diameter()/max(s.riser.centreLineSpeed(), SMALL);
+    if (c.name == "adaptive")
+    {
+        const dictionary& coeffs = dict.subOrEmptyDict("adaptiveCoeffs");
+        const scalar tol =
+            coeffs.found("tolerance") ? inRange(coeffs, "tolerance", 0, false, 1, false) : 1e-8;
+        const scalar maxStep =
+            coeffs.found("maxStep") ? positive(coeffs, "maxStep") : s.deltaT;
+        c.adaptive.reset(new riser::AdaptiveScheme(tol, maxStep));
+    }
+    else if (c.name == "paper")
+    {
+        const dictionary& coeffs = dict.subOrEmptyDict("paperCoeffs");
+        const scalar flow =
+            coeffs.found("flowStep") ? positive(coeffs, "flowStep") : 1e-3*unit;
+        const scalar contact =
+            coeffs.found("contactStep") ? positive(coeffs, "contactStep") : 1e-6*unit;
+        const scalar eps = coeffs.found("eps") ? nonNegative(coeffs, "eps") : 1e-3;
+        c.paper.reset(new riser::PaperScheme(flow, contact, eps));
+    }
+    else
+    {
+        FatalIOErrorInFunction(dict)
+            << "integrator '" << c.name << "' is not one of: adaptive paper"
+            << exit(FatalIOError);
+    }
+    return c;
+}
+
+
+riser::ParticleState initialState(const riserRelease& r)
+{
+    riser::ParticleState s;
+    s.x = toCore(r.x0);
+    s.v = toCore(r.U0);
+    return s;
+}
+
+
+//- One table row (the columns of riserParticleTable)
+void writeRow
+(
+    OFstream& os, const riserScene& scene, const riser::RiserParticleLaw& law,
+    label id, scalar z0, double t, const riser::ParticleState& s
+)
+{
+    const riser::ForceReport f = law.forces(t, s);
+    const scalar xc = scene.riser.axisPosition(t), Ur = scene.riser.riserVelocity(t);
+    os  << t << " 0 " << id << ' '
+        << s.x.x() << ' ' << s.x.y() << ' ' << s.x.z() << ' '
+        << s.v.x() << ' ' << s.v.y() << ' ' << s.v.z() << ' '
+        << s.x.x() - xc << ' ' << s.x.y() << ' '
+        << s.v.x() - Ur << ' ' << s.v.y() << ' ' << s.v.z() << ' '
+        << s.x.z() - z0 << ' '
+        << f.contact.x() << ' ' << f.contact.y() << ' ' << f.contact.z() << ' '
+        << max(f.overlap, 0.0) << ' ' << s.spring.norm();
+    for (const word& name : scene.forceNames)
+    {
+        const riser::Vector F =
+            name == "wallCorrectedDrag" ? f.drag
+          : name == "riserSaffmanMeiLift" ? f.lift
+          : name == "riserAddedMass" ? f.addedMass
+          : name == "riserFluidStress" ? f.fluidStress
+          : name == "gravity" ? f.gravity
+          : riser::Vector::Zero().eval();
+        os  << ' ' << F.x() << ' ' << F.y() << ' ' << F.z();
+    }
+    os  << nl;
+}
+
+
+//- Run every release of the case and write its table and contacts
+void runCase(const Time& runTime, const riserScene& scene, const integratorChoice& integ)
+{
+    const fileName dir = runTime.globalPath()/"postProcessing"/"riserParticle";
+    mkDir(dir);
+    OFstream table(dir/"particles.dat");
+    table.precision(12);
+    table
+        << "# riserParticle (mesh-free, lab frame, integrator " << integ.name
+        << "), SI units; relative: to the riser axis and velocity" << nl
+        << "# t origProc origId x y z Ux Uy Uz xr yr Urx Ury Urz lift"
+        << " Fc_x Fc_y Fc_z deltaN deltaT";
+    for (const word& n : scene.forceNames)
+    {
+        table << " F_" << n << "_x F_" << n << "_y F_" << n << "_z";
+    }
+    table << nl;
+    OFstream contacts(dir/"contacts.dat");
+    contacts.precision(12);
+    contacts
+        << "# riserParticle contacts: origId start end side(+1: x > x_c)"
+        << " maxOverlap impactSpeed reboundSpeed" << nl;
+
+    label finished = 0, lost = 0;
+    forAll(scene.releases, i)
+    {
+        const riserRelease& r = scene.releases[i];
+        const riser::RiserParticleLaw law = scene.law(r);
+        const riser::ParticleState s0 = initialState(r);
+        bool outside = false;
+        riser::Observer obs;
+        obs.row = [&](double t, const riser::ParticleState& s)
+        {
+            if (law.axisDistance(s.x, t) > scene.riser.radius())
+            {
+                outside = true;
+            }
+            writeRow(table, scene, law, i, r.x0.z(), t, s);
+        };
+        obs.contact = [&](const riser::ContactRecord& c)
+        {
+            contacts
+                << i << ' ' << c.start << ' ' << c.end << ' ' << c.side << ' '
+                << c.maxOverlap << ' ' << c.impactSpeed << ' ' << c.reboundSpeed << nl;
+        };
+        const auto start = std::chrono::steady_clock::now();
+        const riser::IntegratorStats st =
+            integ.run(law, r.t0, s0, scene.endTime, scene.deltaT, obs);
+        const double cpu = std::chrono::duration<double>
+            (std::chrono::steady_clock::now() - start).count();
+        Info<< "particle " << i << ": " << st.steps << " steps (" << st.rejected
+            << " rejected, " << st.contactSteps << " in contact), "
+            << st.forceEvaluations << " force evaluations, " << cpu << " s"
+            << endl;
+        if (outside)
+        {
+            ++lost;
+            WarningInFunction
+                << "particle " << i << " was outside the pipe at a row" << endl;
+        }
+        else
+        {
+            ++finished;
+        }
+    }
+    Info<< "particles: " << scene.releases.size() << " released, " << finished
+        << " inside the pipe to the end, " << lost << " outside" << nl
+        << "wrote " << dir/"particles.dat" << " and " << dir/"contacts.dat" << endl;
+}
+
+
+//- The sweep's summary of one case
+struct sweepRow
+{
+    scalar A = 0, f = 0;
+    std::string status = "ok";
+    scalar lift = 0, maxLateral = 0, meanVertical = 0, leftPerPeriod = 0, rightPerPeriod = 0;
+    std::string regime;
+};
+
+
+List<scalar> readSweepList(const dictionary& dict, const word& key, bool zeroAllowed)
+{
+    const List<scalar> values = dict.get<List<scalar>>(key);
+    if (values.empty())
+    {
+        FatalIOErrorInFunction(dict)
+            << "sweep list '" << key << "' is empty" << exit(FatalIOError);
+    }
+    forAll(values, i)
+    {
+        if (!(zeroAllowed ? values[i] >= 0 : values[i] > 0) || !std::isfinite(values[i]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "sweep list '" << key << "' entry " << i << " = " << values[i]
+                << " outside the allowed range " << (zeroAllowed ? "[0" : "(0")
+                << ", inf)" << exit(FatalIOError);
+        }
+    }
+    return values;
+}
+
+
+sweepRow sweepCase
+(
+    const riserScene& scene, const integratorChoice& integ, scalar A, scalar f,
+    label periods, scalar liftTime
+)
+{
+    sweepRow row;
+    row.A = A;
+    row.f = f;
+    try
+    {
+        const riser::RiserFlow& base = scene.riser;
+        riserScene s = scene;
+        s.riser = riser::RiserFlow
+        (
+            base.diameter(), base.centreLineSpeed(), A, 2*constant::mathematical::pi*f,
+            base.phase()
+        );
+        // the release relative to the case's own riser, placed in this one
+        riserRelease r = scene.releases.first();
+        r.x0.x() += s.riser.axisPosition(r.t0) - base.axisPosition(r.t0);
+        r.U0.x() += s.riser.riserVelocity(r.t0) - base.riserVelocity(r.t0);
+
+        const riser::RiserParticleLaw law = s.law(r);
+        const scalar T = 1/f;
+        const scalar duration = max(periods*T, liftTime);
+        const scalar every = min(T/200, duration/200);
+        List<label> left(label(std::ceil(duration/T)) + 1, 0), right(left.size(), 0);
+        scalar liftAt = -1;
+        scalar zStart = r.x0.z(), zEnd = zStart, tEnd = r.t0;
+        riser::Observer obs;
+        obs.row = [&](double t, const riser::ParticleState& p)
+        {
+            if (law.axisDistance(p.x, t) > s.riser.radius())
+            {
+                throw std::runtime_error("particle outside the pipe");
+            }
+            row.maxLateral = max(row.maxLateral, mag(p.v.x() - s.riser.riserVelocity(t)));
+            if (liftAt < 0 && t - r.t0 >= liftTime*(1 - 1e-12))
+            {
+                liftAt = t;
+                row.lift = p.x.z() - zStart;
+            }
+            zEnd = p.x.z();
+            tEnd = t;
+        };
+        obs.contact = [&](const riser::ContactRecord& c)
+        {
+            const label k = min(label((c.start - r.t0)/T), left.size() - 1);
+            (c.side > 0 ? right : left)[k]++;
+        };
+        integ.run(law, r.t0, initialState(r), r.t0 + duration, every, obs);
+        row.meanVertical = (zEnd - zStart)/max(tEnd - r.t0, SMALL);
+        label nLeft = 0, nRight = 0, total = 0, inFirst = 0;
+        bool laterContacts = false, bothEvery = true;
+        for (label k = 0; k < periods; ++k)
+        {
+            nLeft += left[k];
+            nRight += right[k];
+            total += left[k] + right[k];
+            if (k == 0) inFirst = left[k] + right[k];
+            if (k >= periods/2)
+            {
+                laterContacts = laterContacts || left[k] + right[k] > 0;
+                bothEvery = bothEvery && left[k] > 0 && right[k] > 0;
+            }
+        }
+        row.leftPerPeriod = scalar(nLeft)/periods;
+        row.rightPerPeriod = scalar(nRight)/periods;
+        row.regime =
+            total == 0 ? "noContact"
+          : total == 1 && inFirst == 1 ? "onceFirstPeriod"
+          : !laterContacts ? "firstPeriodsOnly"
+          : bothEvery ? "bothWallsEveryPeriod"
+          : "other";
+    }
+    catch (const std::exception& e)
+    {
+        row.status = std::string("failed(") + e.what() + ")";
+        for (char& ch : row.status) if (ch == ' ') ch = '_';
+        row.regime = "none";
+    }
+    return row;
+}
+
+
+void runSweep(const Time& runTime, const riserScene& scene, const integratorChoice& integ)
+{
+    using namespace checkedEntry;
+    const IOdictionary dict(readCaseDict(runTime, "riserSweepDict", runTime.system()));
+    const List<scalar> As = readSweepList(dict, "A", true);
+    const List<scalar> fs = readSweepList(dict, "f", false);
+    const label periods = label(inRange(dict, "periods", 1, true, 1e6, true));
+    const scalar liftTime = dict.found("liftTime") ? nonNegative(dict, "liftTime") : 0;
+    if (scene.releases.empty())
+    {
+        FatalErrorInFunction << "the case releases no particle" << exit(FatalError);
+    }
+
+    const label n = As.size()*fs.size();
+    List<sweepRow> rows(n);
+    std::atomic<label> next(0);
+    const unsigned nThreads = std::max(1u, std::thread::hardware_concurrency());
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<std::thread> workers;
+    for (unsigned w = 0; w < nThreads; ++w)
+    {
+        workers.emplace_back([&]()
+        {
+            for (label i = next++; i < n; i = next++)
+            {
+                rows[i] = sweepCase
+                (
+                    scene, integ, As[i/fs.size()], fs[i % fs.size()], periods, liftTime
+                );
+            }
+        });
+    }
+    for (auto& w : workers) w.join();
+    const double wall = std::chrono::duration<double>
+        (std::chrono::steady_clock::now() - start).count();
+
+    const fileName dir = runTime.globalPath()/"postProcessing"/"riserParticle";
+    mkDir(dir);
+    OFstream os(dir/"sweep.dat");
+    os.precision(10);
+    os  << "# riserParticle sweep (integrator " << integ.name << ", " << periods
+        << " periods per case, lift after " << liftTime << " s), SI units" << nl
+        << "# A f status lift maxRelativeLateralSpeed meanVerticalSpeed"
+        << " contactsPerPeriodLeft contactsPerPeriodRight regime" << nl;
+    label failed = 0;
+    for (const sweepRow& r : rows)
+    {
+        os  << r.A << ' ' << r.f << ' ' << r.status.c_str() << ' ' << r.lift << ' '
+            << r.maxLateral << ' ' << r.meanVertical << ' ' << r.leftPerPeriod << ' '
+            << r.rightPerPeriod << ' ' << r.regime.c_str() << nl;
+        if (r.status != "ok") ++failed;
+    }
+    Info<< "sweep: " << n << " cases (" << failed << " failed) on " << nThreads
+        << " threads in " << wall << " s; wrote " << dir/"sweep.dat" << endl;
+}
+
+} // End anonymous namespace
+
+
+int main(int argc, char *argv[])
+{
+    argList::addNote
+    (
+        "Mesh-free engine: the riser case's particles with the core laws,"
+        " no mesh"
+    );
+    argList::noParallel();
+    argList::addOption("integrator", "name", "adaptive | paper (overrides system/riserParticleDict)");
+    argList::addBoolOption("sweep", "run the (A, f) grid of system/riserSweepDict");
+
+    #include "setRootCase.H"
+    #include "createTime.H"
+
+    const riserScene scene = readScene(runTime);
+    const integratorChoice integ = readIntegrator(runTime, args, scene);
+    Info<< "riserParticle: " << scene.releases.size() << " particle(s), integrator "
+        << integ.name << ", to t = " << scene.endTime << " s" << nl << endl;
+
+    try
+    {
+        if (args.found("sweep"))
+        {
+            runSweep(runTime, scene, integ);
+        }
+        else
+        {
+            runCase(runTime, scene, integ);
+        }
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalErrorInFunction << e.what() << exit(FatalError);
+    }
+
+    Info<< "End" << endl;
+    return 0;
+}
+
+// ************************************************************************* //
