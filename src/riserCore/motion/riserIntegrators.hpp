@@ -158,24 +158,25 @@ public:
         requireNonNegative("riser::PaperScheme", "eps", eps);
     }
 
-    //- Integrate from (t0, s) to tEnd, rows every outputInterval (a
-    //  multiple of the flow step)
+    //- Integrate from (t0, s) to tEnd, rows every outputInterval (the flow
+    //  step is shortened, if need be, to divide the row interval)
     IntegratorStats run(const RiserParticleLaw& law, double t0, ParticleState s,
                         double tEnd, double outputInterval, const Observer& obs) const
     {
         IntegratorStats stats;
-        const long perRow = std::max(1L, std::lround(outputInterval/h_));
+        const long perRow = std::max(1L, long(std::ceil(outputInterval/h_ - 1e-9)));
+        const double h = outputInterval/perRow;
         double t = t0;
-        long k = 0;
+        long k = 0, nextRow = perRow;
         if (obs.row) obs.row(t, s);
-        while (t < tEnd - 0.5*h_)
+        while (t < tEnd - 0.5*h)
         {
-            auto [y, err] = detail::dormandPrince(law, t, detail::pack(s), h_, false,
+            auto [y, err] = detail::dormandPrince(law, t, detail::pack(s), h, false,
                                                   stats.forceEvaluations);
             (void)err;
             s = detail::unpack(y);
             s.spring.setZero();
-            t = t0 + (++k)*h_;
+            t = t0 + (++k)*h;
             ++stats.steps;
             if (law.hasContact())
             {
@@ -185,8 +186,8 @@ public:
                 {
                     t = contact(law, t, s, obs, stats);
                     // back on the flow grid
-                    k = std::lround(std::ceil((t - t0)/h_ - 1e-9));
-                    const double tGrid = t0 + k*h_;
+                    k = std::lround(std::ceil((t - t0)/h - 1e-9));
+                    const double tGrid = t0 + k*h;
                     if (tGrid > t)
                     {
                         auto [yg, eg] = detail::dormandPrince(law, t, detail::pack(s), tGrid - t,
@@ -198,7 +199,12 @@ public:
                     }
                 }
             }
-            if (obs.row && k % perRow == 0) obs.row(t, s);
+            // rows on the grid; a row time passed inside a contact (which
+            // lasts a fraction of a flow step) gets the state after it
+            for (; nextRow <= k; nextRow += perRow)
+            {
+                if (obs.row) obs.row(t0 + nextRow*h, s);
+            }
         }
         return stats;
     }
