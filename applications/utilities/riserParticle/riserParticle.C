@@ -22,14 +22,17 @@ Description
     integrator      adaptive;       // adaptive | paper
     adaptiveCoeffs
     {
-        tolerance   1e-8;           // relative, in (0, 1)
-        maxStep     5e-4;           // [s], default deltaT
+        tolerance   1e-6;           // relative, in (0, 1)
+        maxStep     5e-4;           // [s], default none (rows bound the steps)
     }
     paperCoeffs
     {
         flowStep    1e-4;           // [s], default 1e-3 D/u_cm (the paper's)
         contactStep 1e-7;           // [s], default 1e-6 D/u_cm
         eps         1e-3;           // contact when the gap < eps d
+        contactStart detection;     // detection | geometric: the contact's
+                                    // overlap starts at zero (or the gap)
+                                    // or at the flow step's penetration
     }
     \endverbatim
 
@@ -58,6 +61,7 @@ Usage
 
 #include "argList.H"
 #include "OFstream.H"
+#include "sigFpe.H"
 #include "riserScene.H"
 
 #include <atomic>
@@ -116,9 +120,9 @@ integratorChoice readIntegrator(const Time& runTime, const argList& args, const 
     {
         const dictionary& coeffs = dict.subOrEmptyDict("adaptiveCoeffs");
         const scalar tol =
-            coeffs.found("tolerance") ? inRange(coeffs, "tolerance", 0, false, 1, false) : 1e-8;
+            coeffs.found("tolerance") ? inRange(coeffs, "tolerance", 0, false, 1, false) : 1e-6;
         const scalar maxStep =
-            coeffs.found("maxStep") ? positive(coeffs, "maxStep") : s.deltaT;
+            coeffs.found("maxStep") ? positive(coeffs, "maxStep") : VGREAT;
         c.adaptive.reset(new riser::AdaptiveScheme(tol, maxStep));
     }
     else if (c.name == "paper")
@@ -129,7 +133,22 @@ integratorChoice readIntegrator(const Time& runTime, const argList& args, const 
         const scalar contact =
             coeffs.found("contactStep") ? positive(coeffs, "contactStep") : 1e-6*unit;
         const scalar eps = coeffs.found("eps") ? nonNegative(coeffs, "eps") : 1e-3;
-        c.paper.reset(new riser::PaperScheme(flow, contact, eps));
+        const word start = coeffs.lookupOrDefault<word>("contactStart", "detection");
+        if (start != "detection" && start != "geometric")
+        {
+            FatalIOErrorInFunction(coeffs)
+                << "contactStart '" << start << "' is not one of: detection geometric"
+                << exit(FatalIOError);
+        }
+        c.paper.reset
+        (
+            new riser::PaperScheme
+            (
+                flow, contact, eps,
+                start == "detection"
+              ? riser::ContactStart::detection : riser::ContactStart::geometric
+            )
+        );
     }
     else
     {
@@ -205,7 +224,7 @@ void runCase(const Time& runTime, const riserScene& scene, const integratorChoic
         << "# riserParticle contacts: origId start end side(+1: x > x_c)"
         << " maxOverlap impactSpeed reboundSpeed" << nl;
 
-    label finished = 0, lost = 0;
+    label finished = 0, lost = 0, failed = 0;
     forAll(scene.releases, i)
     {
         const riserRelease& r = scene.releases[i];
@@ -213,13 +232,17 @@ void runCase(const Time& runTime, const riserScene& scene, const integratorChoic
         const riser::ParticleState s0 = initialState(r);
         bool outside = false;
         riser::Observer obs;
+        double writing = 0;     // the time spent writing rows, not integrating
         obs.row = [&](double t, const riser::ParticleState& s)
         {
+            const auto start = std::chrono::steady_clock::now();
             if (law.axisDistance(s.x, t) > scene.riser.radius())
             {
                 outside = true;
             }
             writeRow(table, scene, law, i, r.x0.z(), t, s);
+            writing += std::chrono::duration<double>
+                (std::chrono::steady_clock::now() - start).count();
         };
         obs.contact = [&](const riser::ContactRecord& c)
         {
@@ -228,13 +251,26 @@ void runCase(const Time& runTime, const riserScene& scene, const integratorChoic
                 << c.maxOverlap << ' ' << c.impactSpeed << ' ' << c.reboundSpeed << nl;
         };
         const auto start = std::chrono::steady_clock::now();
-        const riser::IntegratorStats st =
-            integ.run(law, r.t0, s0, scene.endTime, scene.deltaT, obs);
+        riser::IntegratorStats st;
+        try
+        {
+            st = integ.run(law, r.t0, s0, scene.endTime, scene.deltaT, obs);
+        }
+        catch (const riser::IntegrationFailure& e)
+        {
+            ++failed;
+            WarningInFunction
+                << "particle " << i << " failed: " << e.what() << "; its rows"
+                << " stop there (integrator " << integ.name << ": a smaller"
+                << " step or tolerance is needed for this scene)" << endl;
+            continue;
+        }
         const double cpu = std::chrono::duration<double>
             (std::chrono::steady_clock::now() - start).count();
         Info<< "particle " << i << ": " << st.steps << " steps (" << st.rejected
             << " rejected, " << st.contactSteps << " in contact), "
-            << st.forceEvaluations << " force evaluations, " << cpu << " s"
+            << st.forceEvaluations << " force evaluations, " << cpu << " s ("
+            << cpu - writing << " s integrating, " << writing << " s writing rows)"
             << endl;
         if (outside)
         {
@@ -248,8 +284,15 @@ void runCase(const Time& runTime, const riserScene& scene, const integratorChoic
         }
     }
     Info<< "particles: " << scene.releases.size() << " released, " << finished
-        << " inside the pipe to the end, " << lost << " outside" << nl
+        << " inside the pipe to the end, " << lost << " outside, " << failed
+        << " failed" << nl
         << "wrote " << dir/"particles.dat" << " and " << dir/"contacts.dat" << endl;
+    if (failed)
+    {
+        FatalErrorInFunction
+            << failed << " of " << scene.releases.size() << " particle(s) failed"
+            << " (see the warnings above)" << exit(FatalError);
+    }
 }
 
 
@@ -311,7 +354,9 @@ sweepRow sweepCase
         const riser::RiserParticleLaw law = s.law(r);
         const scalar T = 1/f;
         const scalar duration = max(periods*T, liftTime);
-        const scalar every = min(T/200, duration/200);
+        // rows bound the adaptive steps: 50 per period; the lateral speed's
+        // peaks right after contacts come from the contacts themselves
+        const scalar every = min(T/50, duration/50);
         List<label> left(label(std::ceil(duration/T)) + 1, 0), right(left.size(), 0);
         scalar liftAt = -1;
         scalar zStart = r.x0.z(), zEnd = zStart, tEnd = r.t0;
@@ -333,6 +378,7 @@ sweepRow sweepCase
         };
         obs.contact = [&](const riser::ContactRecord& c)
         {
+            row.maxLateral = max(row.maxLateral, max(mag(c.impactSpeed), mag(c.reboundSpeed)));
             const label k = min(label((c.start - r.t0)/T), left.size() - 1);
             (c.side > 0 ? right : left)[k]++;
         };
@@ -448,6 +494,11 @@ int main(int argc, char *argv[])
     const integratorChoice integ = readIntegrator(runTime, args, scene);
     Info<< "riserParticle: " << scene.releases.size() << " particle(s), integrator "
         << integ.name << ", to t = " << scene.endTime << " s" << nl << endl;
+
+    // the integrators check their states themselves and report a step too
+    // large for the scene as riser::IntegrationFailure (a sweep case in its
+    // row), which a floating-point trap would pre-empt
+    sigFpe::unset();
 
     try
     {

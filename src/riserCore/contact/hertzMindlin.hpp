@@ -12,6 +12,13 @@
 //        = -mu_c |F_n| delta_t/|delta_t| otherwise (sliding: delta_t is reset
 //          to the length mu_c |F_n| / k_t, so the spring holds the limit)
 //
+// A spring held at the limit and still stretched (delta_t . U_t > 0) slides:
+// the sticking branch's dashpot acts only below the limit. This is the
+// continuous-time reading of the law: without it, the reset spring would sit
+// exactly on the switch and a step's first stage alone would see the
+// dashpot, an O(1) jump that no step size resolves. With mu_c |F_n| = 0
+// there is no tangential force.
+//
 // n: unit normal from the particle centre towards the wall; delta_n >= 0 the
 // overlap; U the velocity of the contact point relative to the wall, U_t its
 // tangential part; delta_t the tangential spring (the caller accumulates U_t
@@ -160,7 +167,15 @@ public:
         const double etaT = 2.0*zetaT_*std::sqrt(kt*b.mass);
         const double limit = friction_*std::abs(fn);
         const double spring = kt*deltaT.norm();
-        if (spring <= limit)
+        // at the limit the spring slides while it is being stretched; with
+        // no limit (mu_c = 0 or F_n = 0) there is no tangential force
+        const bool atLimit =
+            spring >= (1.0 - 1e-9)*limit && deltaT.dot(Ut) > 0.0;
+        if (limit <= 0.0)
+        {
+            c.sliding = deltaT.norm() > 0.0 || Ut.norm() > 0.0;
+        }
+        else if (spring <= limit && !atLimit)
         {
             c.tangential = -kt*deltaT - etaT*Ut;
             c.springAfter = deltaT;

@@ -9,22 +9,35 @@
 //     approaches the wall; the contact is then integrated by classical RK4
 //     with the fixed contact step h_c with the particle's position frozen:
 //     the overlap is a variable of its own, d(delta_n)/dt = (v - U_w).n,
-//     starting from the geometric overlap (negative: the gap) at detection,
 //     and the contact ends when delta_n falls below zero after it has been
 //     positive. The flow forces act at the frozen position. With the
 //     paper's h = 1e-3 D/u_cm the particle moves up to ~1e-4 m per flow
 //     step, far more than eps d and than the contact's largest overlap
-//     (~1e-5 m): contacts start from whatever overlap the last flow step
-//     left (the charts of validation show what that costs).
+//     (~1e-5 m), so a flow step usually ends inside the wall. Where
+//     delta_n starts is not said by the paper; two readings:
+//       ContactStart::detection (default) - at detection: the gap if the
+//         step ended in the eps band, zero if it ended inside the wall
+//         (the step's penetration is dropped; the contact happens where
+//         the particle is);
+//       ContactStart::geometric - at the geometric overlap the flow step
+//         left: its elastic energy is released on rebound (a gain of
+//         several times the impact energy per contact, which runs away in
+//         the riser scenes; validation/riserParticle charts it).
 //
 // adaptive - an embedded Dormand–Prince 5(4) pair with error control on the
 //     whole law, contact included, with the particle and the wall moving.
 //     Contact onset and end are events: a step across a change of sign of
-//     the overlap is replaced by the step to the crossing, found by
-//     bisection on the step length to an overlap of 1e-7 d (the contact's
-//     overlaps are ~1e-3 d), so
-//     that no step straddles the force's kink. Steps are clipped to output
-//     times (rows are exact states, not interpolants).
+//     the overlap is replaced by the step to the crossing, found by regula
+//     falsi on the step length to an overlap of 1e-7 d (the contact's
+//     overlaps are ~1e-3 d), so that no step straddles the force's kink.
+//     Steps are not cut short by output times: rows come from the pair's
+//     fourth-order continuous extension. No step grows right after a
+//     rejected one.
+//
+// Both throw riser::IntegrationFailure when the state stops making sense (a
+// value not finite, or an overlap beyond the particle's radius): a step too
+// large for the scene, reported rather than carried on. Callers that trap
+// floating-point exceptions should turn the trap off around run().
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_MOTION_RISERINTEGRATORS_HPP
@@ -36,8 +49,16 @@
 #include <array>
 #include <cmath>
 #include <functional>
+#include <sstream>
+#include <stdexcept>
 
 namespace riser {
+
+//- An integration that went wrong (see top); what() says when and why
+struct IntegrationFailure : std::runtime_error
+{
+    using std::runtime_error::runtime_error;
+};
 
 //- One wall contact, as reported to the observer
 struct ContactRecord
@@ -82,6 +103,14 @@ struct DP
     // b - b* (fifth minus fourth order weights)
     static constexpr double e1 = 71.0/57600, e3 = -71.0/16695, e4 = 71.0/1920,
                             e5 = -17253.0/339200, e6 = 22.0/525, e7 = -1.0/40;
+    // the fourth-order continuous extension (Hairer, Norsett & Wanner,
+    // Solving ODEs I, 2nd ed., sec. II.6, the dense output of DOPRI5)
+    static constexpr double d1 = -12715105075.0/11282082432.0,
+                            d3 = 87487479700.0/32700410799.0,
+                            d4 = -10690763975.0/1880347072.0,
+                            d5 = 701980252875.0/199316789632.0,
+                            d6 = -1453857185.0/822651844.0,
+                            d7 = 69997945.0/29380423.0;
 };
 
 //- The state as a vector of 9: x, v, spring
@@ -103,6 +132,46 @@ inline ParticleState unpack(const Y& y)
     return s;
 }
 
+//- Throw IntegrationFailure if the state is not finite or the particle is
+//  deeper in the wall than its radius
+inline void requireSane(const RiserParticleLaw& law, double t, const Y& y)
+{
+    const char* what = nullptr;
+    if (!y.allFinite()) what = "state not finite";
+    else if (law.hasContact() && law.overlap(y.segment<3>(0), t) > law.radius())
+    {
+        what = "overlap beyond the particle radius";
+    }
+    if (what)
+    {
+        std::ostringstream msg;
+        msg << what << " at t = " << t << " s";
+        throw IntegrationFailure(msg.str());
+    }
+}
+
+//- The law's forces at a state the integration reached: the law's own
+//  argument checks (std::invalid_argument) become IntegrationFailure here,
+//  the parameters having been checked when the law was built
+inline ForceReport forcesAt(const RiserParticleLaw& law, double t, const ParticleState& s)
+{
+    const char* what = "state not finite";
+    if (s.x.allFinite() && s.v.allFinite() && s.spring.allFinite())
+    {
+        try
+        {
+            return law.forces(t, s);
+        }
+        catch (const std::invalid_argument& e)
+        {
+            what = e.what();
+        }
+    }
+    std::ostringstream msg;
+    msg << what << " at t = " << t << " s";
+    throw IntegrationFailure(msg.str());
+}
+
 //- dy/dt of the whole law (contact included or not)
 inline Y rate(const RiserParticleLaw& law, double t, const Y& y, bool contact, long& evaluations)
 {
@@ -110,7 +179,7 @@ inline Y rate(const RiserParticleLaw& law, double t, const Y& y, bool contact, l
     ParticleState s = unpack(y);
     if (!contact) s.spring.setZero();
     Y dy;
-    ForceReport f = law.forces(t, s);
+    const ForceReport f = forcesAt(law, t, s);
     Vector F = f.drag + f.lift + f.addedMass + f.fluidStress + f.gravity;
     Vector springRate = Vector::Zero();
     if (contact)
@@ -122,9 +191,24 @@ inline Y rate(const RiserParticleLaw& law, double t, const Y& y, bool contact, l
     return dy;
 }
 
-//- One Dormand–Prince step: the fifth-order solution and the error estimate
-inline std::pair<Y, Y> dormandPrince(const RiserParticleLaw& law, double t, const Y& y,
-                                     double h, bool contact, long& ev)
+//- One Dormand–Prince step: the fifth-order solution, the error estimate
+//  and the coefficients of the continuous extension over the step
+struct Step
+{
+    Y y;        //!< the fifth-order solution at t + h
+    Y err;      //!< fifth minus fourth order
+    std::array<Y, 5> dense;
+
+    //- The state at t + theta h, theta in [0, 1] (fourth order)
+    Y at(double theta) const
+    {
+        const double u = 1.0 - theta;
+        return dense[0] + theta*(dense[1] + u*(dense[2] + theta*(dense[3] + u*dense[4])));
+    }
+};
+
+inline Step dormandPrince(const RiserParticleLaw& law, double t, const Y& y,
+                          double h, bool contact, long& ev)
 {
     using C = DP;
     const Y k1 = rate(law, t, y, contact, ev);
@@ -135,23 +219,33 @@ inline std::pair<Y, Y> dormandPrince(const RiserParticleLaw& law, double t, cons
                       y + h*(C::a51*k1 + C::a52*k2 + C::a53*k3 + C::a54*k4), contact, ev);
     const Y k6 = rate(law, t + h,
                       y + h*(C::a61*k1 + C::a62*k2 + C::a63*k3 + C::a64*k4 + C::a65*k5), contact, ev);
-    const Y y5 = y + h*(C::b1*k1 + C::b3*k3 + C::b4*k4 + C::b5*k5 + C::b6*k6);
-    const Y k7 = rate(law, t + h, y5, contact, ev);
-    const Y err = h*(C::e1*k1 + C::e3*k3 + C::e4*k4 + C::e5*k5 + C::e6*k6 + C::e7*k7);
-    return {y5, err};
+    Step st;
+    st.y = y + h*(C::b1*k1 + C::b3*k3 + C::b4*k4 + C::b5*k5 + C::b6*k6);
+    const Y k7 = rate(law, t + h, st.y, contact, ev);
+    st.err = h*(C::e1*k1 + C::e3*k3 + C::e4*k4 + C::e5*k5 + C::e6*k6 + C::e7*k7);
+    st.dense[0] = y;
+    st.dense[1] = st.y - y;
+    st.dense[2] = h*k1 - st.dense[1];
+    st.dense[3] = st.dense[1] - h*k7 - st.dense[2];
+    st.dense[4] = h*(C::d1*k1 + C::d3*k3 + C::d4*k4 + C::d5*k5 + C::d6*k6 + C::d7*k7);
+    return st;
 }
 
 } // namespace detail
 
+
+//- Where the paper scheme's contact overlap starts (see top)
+enum class ContactStart { detection, geometric };
 
 //- The paper's scheme (see top)
 class PaperScheme
 {
 public:
     //- flow step h, contact step hc, detection threshold eps (of d)
-    PaperScheme(double h, double hc, double eps)
+    PaperScheme(double h, double hc, double eps,
+                ContactStart start = ContactStart::detection)
     :
-        h_(h), hc_(hc), eps_(eps)
+        h_(h), hc_(hc), eps_(eps), start_(start)
     {
         requirePositive("riser::PaperScheme", "flow step", h);
         requirePositive("riser::PaperScheme", "contact step", hc);
@@ -171,12 +265,12 @@ public:
         if (obs.row) obs.row(t, s);
         while (t < tEnd - 0.5*h)
         {
-            auto [y, err] = detail::dormandPrince(law, t, detail::pack(s), h, false,
-                                                  stats.forceEvaluations);
-            (void)err;
+            const detail::Y y = detail::dormandPrince(law, t, detail::pack(s), h, false,
+                                                      stats.forceEvaluations).y;
+            t = t0 + (++k)*h;
+            detail::requireSane(law, t, y);
             s = detail::unpack(y);
             s.spring.setZero();
-            t = t0 + (++k)*h;
             ++stats.steps;
             if (law.hasContact())
             {
@@ -190,9 +284,10 @@ public:
                     const double tGrid = t0 + k*h;
                     if (tGrid > t)
                     {
-                        auto [yg, eg] = detail::dormandPrince(law, t, detail::pack(s), tGrid - t,
-                                                              false, stats.forceEvaluations);
-                        (void)eg;
+                        const detail::Y yg = detail::dormandPrince
+                        (
+                            law, t, detail::pack(s), tGrid - t, false, stats.forceEvaluations
+                        ).y;
                         s = detail::unpack(yg);
                         s.spring.setZero();
                         t = tGrid;
@@ -218,6 +313,7 @@ private:
         const Vector n = law.wallNormal(x, t);
         const ContactBody body{law.radius(), law.mass()};
         double dn = law.overlap(x, t);
+        if (start_ == ContactStart::detection) dn = std::min(dn, 0.0);
         Vector spring = Vector::Zero();
         ContactRecord rec;
         rec.start = t;
@@ -230,8 +326,7 @@ private:
         auto rate = [&](double tau, const Z& z)
         {
             ++stats.forceEvaluations;
-            ParticleState p{x, z.v, Vector::Zero()};
-            ForceReport f = law.forces(tau, p);
+            const ForceReport f = detail::forcesAt(law, tau, ParticleState{x, z.v, Vector::Zero()});
             Vector F = f.drag + f.lift + f.addedMass + f.fluidStress + f.gravity;
             const Vector U = z.v - law.wallVelocity(tau);
             if (z.dn > 0.0)
@@ -261,6 +356,13 @@ private:
             z.spring += hc_/6.0*(k1.spring + 2.0*k2.spring + 2.0*k3.spring + k4.spring);
             t += hc_;
             ++stats.contactSteps;
+            if (!z.v.allFinite() || !std::isfinite(z.dn) || z.dn > law.radius())
+            {
+                std::ostringstream msg;
+                msg << "contact at frozen position: overlap " << z.dn/law.diameter()
+                    << " d, speed " << z.v.norm() << " m/s at t = " << t << " s";
+                throw IntegrationFailure(msg.str());
+            }
             if (z.dn > 0.0)
             {
                 touched = true;
@@ -281,6 +383,7 @@ private:
     }
 
     double h_, hc_, eps_;
+    ContactStart start_;
 };
 
 
@@ -338,49 +441,84 @@ public:
         ContactRecord rec;
         double h = std::min(hMax_, 1e-3*outputInterval + 1e-12);
         const double contactScale = 1e-7*law.diameter();   // overlap resolution of events
+        bool justRejected = false;
 
         while (t < tEnd - 1e-12*tEnd)
         {
             double hTry = std::min({h, hMax_, tEnd - t});
-            if (nextRow > t) hTry = std::min(hTry, nextRow - t);
-            auto [yNew, err] = detail::dormandPrince(law, t, y, hTry, inContact, stats.forceEvaluations);
-            const double e = norm(err, y, yNew);
+            detail::Step step;
+            try
+            {
+                step = detail::dormandPrince(law, t, y, hTry, inContact, stats.forceEvaluations);
+            }
+            catch (const IntegrationFailure&)
+            {
+                // a stage left the finite numbers: a step far too long
+                if (hTry < 1e-12*std::max(1.0, std::abs(t))) throw;
+                step.y.setConstant(NAN);
+                step.err.setConstant(INFINITY);
+            }
+            const double e = norm(step.err, y, step.y);
             if (!(e <= 1.0))
             {
                 ++stats.rejected;
                 h = hTry*std::max(0.1, 0.9*std::pow(std::isfinite(e) ? e : 1e10, -0.2));
+                justRejected = true;
                 continue;
             }
             // contact events: a change of sign of the overlap inside the step
             if (law.hasContact())
             {
-                const double before = law.overlap(y.segment<3>(0), t);
-                const double after = law.overlap(yNew.segment<3>(0), t + hTry);
+                const double after = law.overlap(step.y.segment<3>(0), t + hTry);
                 const bool onset = !inContact && after > 0.0;
                 const bool release = inContact && after <= 0.0;
                 if ((onset && after > contactScale) || (release && -after > contactScale))
                 {
-                    // bisect the step length to the crossing
+                    // locate the crossing in the step length: the overlap
+                    // is smooth in it, so regula falsi (Illinois variant)
+                    // converges in a few Dormand-Prince steps; the
+                    // crossing's side is kept (hi crosses, lo does not)
                     double lo = 0.0, hi = hTry;
-                    detail::Y yHi = yNew;
+                    double oLo = law.overlap(y.segment<3>(0), t), oHi = after;
+                    int sameSide = 0;
+                    detail::Step stepHi = step;
                     for (int i = 0; i < 60; ++i)
                     {
-                        const double mid = 0.5*(lo + hi);
-                        auto [yMid, eMid] = detail::dormandPrince(law, t, y, mid, inContact,
-                                                                  stats.forceEvaluations);
-                        (void)eMid;
-                        const double o = law.overlap(yMid.segment<3>(0), t + mid);
+                        double mid = lo - oLo*(hi - lo)/(oHi - oLo);
+                        if (!(mid > lo && mid < hi)) mid = 0.5*(lo + hi);
+                        const detail::Step stepMid =
+                            detail::dormandPrince(law, t, y, mid, inContact, stats.forceEvaluations);
+                        const double o = law.overlap(stepMid.y.segment<3>(0), t + mid);
                         const bool crossed = onset ? o > 0.0 : o <= 0.0;
-                        if (crossed) { hi = mid; yHi = yMid; } else { lo = mid; }
+                        if (crossed)
+                        {
+                            hi = mid; oHi = o; stepHi = stepMid;
+                            if (++sameSide > 1) oLo *= 0.5;
+                        }
+                        else
+                        {
+                            lo = mid; oLo = o;
+                            sameSide = 0;
+                            oHi *= 0.5;
+                        }
                         if (std::abs(o) <= contactScale && crossed) break;
                     }
                     hTry = hi;
-                    yNew = yHi;
+                    step = stepHi;
                 }
-                (void)before;
+            }
+            detail::requireSane(law, t + hTry, step.y);
+            // rows inside the step from its continuous extension; a row at
+            // its end gets the state after the contact bookkeeping below
+            while (obs.row && nextRow < t + hTry - 1e-12*std::max(1.0, std::abs(nextRow)))
+            {
+                ParticleState p = detail::unpack(step.at((nextRow - t)/hTry));
+                if (!inContact) p.spring.setZero();
+                obs.row(nextRow, p);
+                nextRow = t0 + (++row)*outputInterval;
             }
             t += hTry;
-            y = yNew;
+            y = step.y;
             ++stats.steps;
             if (inContact) ++stats.contactSteps;
 
@@ -415,7 +553,10 @@ public:
                 y = detail::pack(p);
             }
             emitRows();
-            h = hTry*std::min(5.0, 0.9*std::pow(std::max(e, 1e-10), -0.2));
+            // no growth right after a rejection (Hairer, Norsett & Wanner,
+            // Solving ODEs I, sec. II.4)
+            h = hTry*std::min(justRejected ? 1.0 : 5.0, 0.9*std::pow(std::max(e, 1e-10), -0.2));
+            justRejected = false;
         }
         return stats;
     }
