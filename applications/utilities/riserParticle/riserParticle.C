@@ -45,6 +45,7 @@ Description
     f           (0.5 1 3);          // [Hz], each > 0
     periods     20;                 // riser periods per case, > 0
     liftTime    10;                 // [s] lifting distance after this time
+                                    // (0 or absent: after the periods)
     \endverbatim
     The release is taken relative to the riser (position from the axis,
     velocity relative to the riser's), so that each case starts as the
@@ -353,10 +354,12 @@ sweepRow sweepCase
 
         const riser::RiserParticleLaw law = s.law(r);
         const scalar T = 1/f;
-        const scalar duration = max(periods*T, liftTime);
-        // rows bound the adaptive steps: 50 per period; the lateral speed's
-        // peaks right after contacts come from the contacts themselves
-        const scalar every = min(T/50, duration/50);
+        const scalar liftAfter = liftTime > 0 ? liftTime : periods*T;
+        const scalar duration = max(periods*T, liftAfter);
+        // rows: about 50 per period, on a grid through liftAfter (where the
+        // lifting distance is read); the lateral speed's peaks right after
+        // contacts come from the contacts themselves
+        const scalar every = liftAfter/std::ceil(liftAfter/min(T/50, duration/50));
         List<label> left(label(std::ceil(duration/T)) + 1, 0), right(left.size(), 0);
         scalar liftAt = -1;
         scalar zStart = r.x0.z(), zEnd = zStart, tEnd = r.t0;
@@ -368,7 +371,7 @@ sweepRow sweepCase
                 throw std::runtime_error("particle outside the pipe");
             }
             row.maxLateral = max(row.maxLateral, mag(p.v.x() - s.riser.riserVelocity(t)));
-            if (liftAt < 0 && t - r.t0 >= liftTime*(1 - 1e-12))
+            if (liftAt < 0 && t - r.t0 >= liftAfter*(1 - 1e-12))
             {
                 liftAt = t;
                 row.lift = p.x.z() - zStart;
@@ -383,6 +386,10 @@ sweepRow sweepCase
             (c.side > 0 ? right : left)[k]++;
         };
         integ.run(law, r.t0, initialState(r), r.t0 + duration, every, obs);
+        if (liftAt < 0)
+        {
+            throw std::runtime_error("no row at liftTime");
+        }
         row.meanVertical = (zEnd - zStart)/max(tEnd - r.t0, SMALL);
         label nLeft = 0, nRight = 0, total = 0, inFirst = 0;
         bool laterContacts = false, bothEvery = true;

@@ -1,0 +1,409 @@
+// Gondret, Lance & Petit (2002), St = 152: a steel sphere falls from rest in
+// silicone oil and bounces on a flat horizontal wall. The sphere is the
+// model of MODEL.md section 1 in a quiescent fluid, vertical motion only:
+//
+//   (m_p + C_A m_f) dv/dt = -c(Re) v - (m_p - m_f) g + F_H + F_C,   dz/dt = v
+//
+// c(Re): the standard drag curve of Clift & Gauvin (riser::dragFactor,
+// DragLaw::continuous) with the pipe's wall factors switched off (d/D = 0:
+// an unbounded sphere); C_A = 1/2; F_H the Basset force with the classical
+// C_H = 6 (riser::HistoryStepper, newest weight implicit, window + tail);
+// F_C the Hertz–Mindlin wall force with Tsuji damping calibrated to e_dry
+// (riser::HertzMindlin). Each run is done with and without F_H. The model
+// has no lubrication and no wall correction of the drag: the sphere meets
+// the wall with its free-fall speed and leaves it with e_dry times that.
+//
+// Position and velocity share the stepper's trapezoidal rule: the law keeps
+// the last committed state (t_n, z_n, v_n) and evaluates the force at
+// z = z_n + (t - t_n)(v_n + v)/2, so the stepper's fixed-point iteration on
+// v_{n+1} solves the contact implicitly. One constant step for the whole
+// run (the history's grid): 2e-7 s, about 1/70 of the Hertz contact time.
+//
+// Numbers and their sources:
+//   sphere d = 3 mm, 7800 kg/m^3; oil 935 kg/m^3, mu = 0.01 Pa s; St = 152:
+//       Gondret, Lance & Petit, Phys. Fluids 14, 643 (2002); the same set in
+//       Table 1 of Biegert, Vowinckel & Meiburg, J. Comput. Phys. 340, 105
+//       (2017) (u_in = 0.585 m/s, rho_p/rho_f = 8.342, nu = 1.070e-5 m^2/s)
+//   e_dry = 0.97: Biegert et al. (2017), Table 1 and sec. 3.2 ("for glass
+//       and hard metals e_dry = 0.97 is a typical value", citing Foerster et
+//       al. 1994, Joseph et al. 2001, Gondret et al. 2002)
+//   wall: glass (assumed; E = 63 GPa, nu = 0.23, typical soda-lime values),
+//       sphere: steel (E = 200 GPa, nu = 0.3, as MODEL.md's steel). The
+//       elastic constants set the contact time (~15 us) only, not e.
+//   experiment: the digitized gap h(t) given as the first argument.
+//
+// usage: gondret <gap csv> <output folder>
+// writes <output folder>/curve_basset.dat, curve_noBasset.dat, summary.txt
+// SPDX-License-Identifier: GPL-3.0-or-later
+#include "basset/bassetCoefficient.hpp"
+#include "contact/hertzMindlin.hpp"
+#include "drag/dragCoefficient.hpp"
+#include "motion/historyStepper.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <ctime>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+using namespace riser;
+
+namespace {
+
+struct Scene
+{
+    double d = 3e-3, rhoP = 7800.0, rhoF = 935.0, mu = 0.01, g = 9.81;
+    double CA = 0.5;
+    double releaseGap = 0.20;     //!< gap at release from rest [m]
+    double eDry = 0.97;
+    ElasticMaterial sphere{200e9, 0.3};   // steel
+    ElasticMaterial wall{63e9, 0.23};     // glass (assumed)
+
+    double R() const { return 0.5*d; }
+    double volume() const { return M_PI*d*d*d/6.0; }
+    double mp() const { return rhoP*volume(); }
+    double mf() const { return rhoF*volume(); }
+};
+
+//- The law of motion, vertical (z up, wall at z = 0), as a System of
+//  riser::HistoryStepper. fluid = false leaves the contact alone (the dry
+//  impact check).
+class SphereOnFlatWall
+{
+public:
+    using Value = double;
+
+    SphereOnFlatWall(const Scene& s, bool basset, bool fluid = true)
+    :
+        s_(s), fluid_(fluid),
+        KH_(basset && fluid ? classicalBassetCoefficient*s.d*s.d/4.0*std::sqrt(M_PI*s.rhoF*s.mu) : 0.0),
+        unbounded_(0.0),
+        contact_(HertzMindlinParameters{s.sphere, s.wall, s.eDry, 1.0, 0.0}),
+        body_(s.R(), s.mp())
+    {}
+
+    double mass() const { return s_.mp(); }
+    double addedMass() const { return fluid_ ? s_.CA*s_.mf() : 0.0; }
+    double historyCoefficient() const { return KH_; }
+    double carrierVelocity(double) const { return 0.0; }
+    double carrierAcceleration(double) const { return 0.0; }
+
+    //- Centre height at time t >= t_n for velocity v at t (trapezoidal)
+    double height(double v, double t) const { return z_ + 0.5*(t - t_)*(v_ + v); }
+
+    double force(double v, double t) const
+    {
+        double F = 0.0;
+        if (fluid_)
+        {
+            const double Re = s_.rhoF*s_.d*std::abs(v)/s_.mu;
+            F = -dragFactor(DragLaw::continuous, unbounded_, s_.d, s_.mu, Re)*v
+              - (s_.mp() - s_.mf())*s_.g;
+        }
+        return F + contactForce(height(v, t), v);
+    }
+
+    double contactForce(double z, double v) const
+    {
+        const double overlap = s_.R() - z;
+        if (overlap <= 0.0) return 0.0;
+        const Vector n(0.0, 0.0, -1.0);       // centre -> wall
+        return contact_.force(body_, overlap, n, Vector(0.0, 0.0, v), Vector::Zero()).normal.z();
+    }
+
+    void place(double t, double z, double v) { t_ = t; z_ = z; v_ = v; }
+    void commit(double t, double v) { place(t, height(v, t), v); }
+    double gap() const { return z_ - s_.R(); }
+    double contactTime(double v) const { return contact_.contactTime(body_, v); }
+
+private:
+    const Scene& s_;
+    bool fluid_;
+    double KH_;
+    WallFactors unbounded_;
+    HertzMindlin contact_;
+    ContactBody body_;
+    double t_ = 0.0, z_ = 0.0, v_ = 0.0;
+};
+
+struct Sample { double t, gap, v; };
+struct Contact { double tTouch, vTouch, tLeave = NAN, vLeave = NAN; };
+struct Apex { double t, gap; };
+
+struct Run
+{
+    std::vector<Sample> curve;      // every outputEvery steps, t from release
+    std::vector<Contact> contacts;
+    std::vector<Apex> apexes;       // highest gap after each contact
+    long steps = 0;
+    double cpu = 0.0;
+    double t0() const { return contacts.at(0).tTouch; }
+};
+
+//- Release from rest, follow the sphere to tAfter past the first contact
+Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAfter,
+           long outputEvery)
+{
+    SphereOnFlatWall law(s, basset);
+    law.place(0.0, s.releaseGap + s.R(), 0.0);
+    const long window = std::max(2L, std::lround(windowTime/h));
+    Run r;
+    const std::clock_t start = std::clock();
+    HistoryStepper<SphereOnFlatWall> stepper(law, HistoryMethod::windowTail, h, window, 0.0, 0.0,
+                                             NewestHistoryWeight::implicit, HistoryTail::leastSquares);
+    double tEnd = HUGE_VAL;
+    double gapOld = law.gap(), vOld = 0.0;
+    while (stepper.time() < tEnd)
+    {
+        stepper.step();
+        const double t = stepper.time(), v = stepper.velocity();
+        law.commit(t, v);
+        const double gap = law.gap();
+        ++r.steps;
+        if ((gapOld > 0.0) != (gap > 0.0))      // touch or leave inside the step
+        {
+            const double f = gapOld/(gapOld - gap);
+            const double tc = t - h + f*h, vc = vOld + f*(v - vOld);
+            if (gap <= 0.0)
+            {
+                r.contacts.push_back({tc, vOld});
+                if (r.contacts.size() == 1) tEnd = tc + tAfter;
+            }
+            else
+            {
+                r.contacts.back().tLeave = tc;
+                r.contacts.back().vLeave = v;
+                r.apexes.push_back({t, gap});
+            }
+        }
+        if (gap > 0.0 && !r.apexes.empty() && r.contacts.back().tLeave == r.contacts.back().tLeave
+            && gap > r.apexes.back().gap)
+        {
+            r.apexes.back() = {t, gap};
+        }
+        if (r.steps % outputEvery == 0) r.curve.push_back({t, gap, v});
+        gapOld = gap;
+        vOld = v;
+    }
+    r.cpu = double(std::clock() - start)/CLOCKS_PER_SEC;
+    return r;
+}
+
+//- Restitution of one impact at speed v without fluid, same stepper and step
+double dryRestitution(const Scene& s, double v, double h)
+{
+    SphereOnFlatWall law(s, false, false);
+    law.place(0.0, s.R() + 0.5*v*h, -v);       // half a step above the wall
+    HistoryStepper<SphereOnFlatWall> stepper(law, HistoryMethod::windowTail, h, 2, -v);
+    for (long k = 0; k < 100000000L; ++k)
+    {
+        const double gapOld = law.gap(), vOld = stepper.velocity();
+        stepper.step();
+        law.commit(stepper.time(), stepper.velocity());
+        if (law.gap() > 0.0 && gapOld <= 0.0)
+        {
+            const double f = gapOld/(gapOld - law.gap());
+            return (vOld + f*(stepper.velocity() - vOld))/v;
+        }
+    }
+    return NAN;
+}
+
+//- Terminal speed of the drag law: c(Re) V = (m_p - m_f) g, by bisection
+double terminalSpeed(const Scene& s)
+{
+    const WallFactors unbounded(0.0);
+    double lo = 0.0, hi = 10.0;
+    for (int i = 0; i < 200; ++i)
+    {
+        const double V = 0.5*(lo + hi), Re = s.rhoF*s.d*V/s.mu;
+        (dragFactor(DragLaw::continuous, unbounded, s.d, s.mu, Re)*V < (s.mp() - s.mf())*s.g ? lo : hi) = V;
+    }
+    return 0.5*(lo + hi);
+}
+
+//- Model gap at time t after the first contact (linear between samples)
+double gapAt(const Run& r, double t)
+{
+    const double ta = t + r.t0();
+    auto it = std::lower_bound(r.curve.begin(), r.curve.end(), ta,
+                               [](const Sample& a, double x) { return a.t < x; });
+    if (it == r.curve.begin() || it == r.curve.end()) return NAN;
+    const Sample& b = *it;
+    const Sample& a = *(it - 1);
+    return a.gap + (ta - a.t)/(b.t - a.t)*(b.gap - a.gap);
+}
+
+struct Experiment { std::vector<double> t, gap; };
+
+Experiment readExperiment(const std::string& file)
+{
+    Experiment e;
+    std::ifstream in(file);
+    std::string line;
+    while (std::getline(in, line))
+    {
+        if (line.empty() || line[0] == '#') continue;
+        double t, g;
+        char comma;
+        std::istringstream row(line);
+        if (row >> t >> comma >> g) { e.t.push_back(t); e.gap.push_back(g); }
+    }
+    return e;
+}
+
+void writeCurve(const Run& r, const std::string& file, double from, double to)
+{
+    FILE* f = std::fopen(file.c_str(), "w");
+    std::fprintf(f, "# t - t_first_contact [s]  gap [m]  v [m/s]\n");
+    for (const Sample& p : r.curve)
+    {
+        const double t = p.t - r.t0();
+        if (t >= from && t <= to) std::fprintf(f, "%.6e %.6e %.6e\n", t, p.gap, p.v);
+    }
+    std::fclose(f);
+}
+
+} // namespace
+
+int main(int argc, char* argv[])
+{
+    if (argc < 3)
+    {
+        std::fprintf(stderr, "usage: %s <gap csv> <output folder> [h] [release gap] [window]\n", argv[0]);
+        return 2;
+    }
+    const Experiment exp = readExperiment(argv[1]);
+    const std::string out = argv[2];
+    if (exp.t.size() < 10) { std::fprintf(stderr, "no data in %s\n", argv[1]); return 1; }
+
+    Scene s;
+    const double h = argc > 3 ? std::atof(argv[3]) : 2e-7;
+    if (argc > 4) s.releaseGap = std::atof(argv[4]);
+    const double windowTime = argc > 5 ? std::atof(argv[5]) : 1e-4, tAfter = 0.25;
+    const long outputEvery = std::lround(1e-5/h);       // curves every 1e-5 s
+    HistoryTailConstants::weights(HistoryTail::leastSquares);    // fit once, untimed
+
+    std::FILE* sum = std::fopen((out + "/summary.txt").c_str(), "w");
+    auto say = [sum](const char* fmt, auto... args)
+    {
+        std::printf(fmt, args...);
+        std::fprintf(sum, fmt, args...);
+    };
+
+    // --- experiment: approach speed, apexes (local maxima above 0.3 mm) ----
+    double st = 0, sg = 0, stt = 0, stg = 0;
+    int n = 0;
+    for (size_t i = 0; i < exp.t.size(); ++i)
+    {
+        if (exp.t[i] >= 0.0) continue;
+        st += exp.t[i]; sg += exp.gap[i]; stt += exp.t[i]*exp.t[i]; stg += exp.t[i]*exp.gap[i]; ++n;
+    }
+    const double vExp = -(n*stg - st*sg)/(n*stt - st*st);
+    std::vector<Apex> expApex;
+    for (size_t i = 1; i + 1 < exp.t.size(); ++i)
+    {
+        if (exp.gap[i] > 3e-4 && exp.gap[i] > exp.gap[i - 1] && exp.gap[i] > exp.gap[i + 1])
+        {
+            expApex.push_back({exp.t[i], exp.gap[i]});
+        }
+    }
+    const Apex published[3] = {{0.037, 7.47e-3}, {0.106, 2.23e-3}, {0.140, 0.52e-3}};
+
+    const SphereOnFlatWall probe(s, false);
+    say("Gondret, Lance & Petit (2002), St = 152: steel sphere d = %g mm in silicone oil, glass wall (assumed)\n",
+        s.d*1e3);
+    say("model: drag Clift-Gauvin (unbounded), C_A = %g, Basset C_H = 6 (or none), Hertz-Mindlin e_dry = %g,"
+        " no lubrication\n", s.CA, s.eDry);
+    say("release from rest at gap %.3f m; step h = %.1e s (constant), Basset window %.0e s + tail (least squares)\n",
+        s.releaseGap, h, windowTime);
+    say("terminal speed of the drag law: %.4f m/s (Re = %.1f, St = Re rho_p/(9 rho_f) = %.1f)\n",
+        terminalSpeed(s), s.rhoF*s.d*terminalSpeed(s)/s.mu,
+        s.rhoF*s.d*terminalSpeed(s)/s.mu*s.rhoP/(9.0*s.rhoF));
+    say("Hertz contact time at 0.585 m/s: %.2f us = %.0f steps; dry impact with this stepper: e = %.5f"
+        " (0.585 m/s), %.5f (0.1 m/s)\n",
+        probe.contactTime(0.585)*1e6, probe.contactTime(0.585)/h,
+        dryRestitution(s, 0.585, h), dryRestitution(s, 0.1, h));
+    say("experiment: approach speed %.4f m/s (least-squares slope of the %d points before contact;"
+        " published ~0.585)\n\n", vExp, n);
+
+    struct Variant { const char* name; bool basset; };
+    const Variant variants[] = {{"basset", true}, {"noBasset", false}};
+    Run runs[2];
+    for (int k = 0; k < 2; ++k)
+    {
+        runs[k] = bounce(s, variants[k].basset, h, windowTime, tAfter, outputEvery);
+        writeCurve(runs[k], out + "/curve_" + variants[k].name + ".dat", -0.05, tAfter);
+    }
+
+    say("%-34s %12s %12s %12s\n", "", "experiment", "with Basset", "no Basset");
+    say("%-34s %12.4f %12.4f %12.4f\n", "impact speed [m/s]", 0.585,
+        -runs[0].contacts[0].vTouch, -runs[1].contacts[0].vTouch);
+    say("%-34s %12s %12.4f %12.4f\n", "speed leaving 1st contact [m/s]", "-",
+        runs[0].contacts[0].vLeave, runs[1].contacts[0].vLeave);
+    for (int a = 0; a < 3; ++a)
+    {
+        char label[64];
+        std::snprintf(label, sizeof label, "apex %d gap [mm] (digitized)", a + 1);
+        const double e = a < int(expApex.size()) ? expApex[a].gap*1e3 : NAN;
+        auto mm = [&](const Run& r) { return a < int(r.apexes.size()) ? r.apexes[a].gap*1e3 : NAN; };
+        auto at = [&](const Run& r) { return a < int(r.apexes.size()) ? r.apexes[a].t - r.t0() : NAN; };
+        say("%-34s %5.2f (%5.3f) %12.3f %12.3f\n", label, published[a].gap*1e3, e, mm(runs[0]), mm(runs[1]));
+        std::snprintf(label, sizeof label, "apex %d time [s] (digitized)", a + 1);
+        const double te = a < int(expApex.size()) ? expApex[a].t : NAN;
+        say("%-34s %5.3f (%5.4f) %12.4f %12.4f\n", label, published[a].t, te, at(runs[0]), at(runs[1]));
+    }
+    for (int c = 1; c < 4; ++c)
+    {
+        char label[64];
+        std::snprintf(label, sizeof label, "contact %d time [s]", c + 1);
+        auto tc = [&](const Run& r) { return c < int(r.contacts.size()) ? r.contacts[c].tTouch - r.t0() : NAN; };
+        say("%-34s %12s %12.4f %12.4f\n", label, "-", tc(runs[0]), tc(runs[1]));
+    }
+    double rms[2], worst[2];
+    for (int k = 0; k < 2; ++k)
+    {
+        double sq = 0.0;
+        worst[k] = 0.0;
+        for (size_t i = 0; i < exp.t.size(); ++i)
+        {
+            const double d = gapAt(runs[k], exp.t[i]) - exp.gap[i];
+            sq += d*d;
+            worst[k] = std::max(worst[k], std::abs(d));
+        }
+        rms[k] = std::sqrt(sq/exp.t.size());
+    }
+    say("%-34s %12s %12.3f %12.3f\n", "RMS gap difference [mm]", "-", rms[0]*1e3, rms[1]*1e3);
+    say("%-34s %12s %12.3f %12.3f\n", "largest gap difference [mm]", "-", worst[0]*1e3, worst[1]*1e3);
+    say("(over the %zu digitized points, -0.016 .. 0.178 s; t = 0 at each one's first contact)\n",
+        exp.t.size());
+    say("%-34s %12s %12zu %12zu\n", "contacts within 0.25 s", "-", runs[0].contacts.size(), runs[1].contacts.size());
+    say("%-34s %12s %12.2f %12.2f\n", "CPU time [s]", "-", runs[0].cpu, runs[1].cpu);
+    say("%-34s %12s %12ld %12ld\n", "steps", "-", runs[0].steps, runs[1].steps);
+
+    // --- numerical checks: half the step, twice the Basset window ----------
+    say("\nchecks (with Basset): apex gaps [mm] and RMS [mm]\n");
+    struct Check { const char* name; double h, window; };
+    const Check checks[] = {{"h = 4e-7 s", 4e-7, windowTime}, {"window 2e-4 s", h, 2*windowTime}};
+    for (const Check& c : checks)
+    {
+        const Run r = bounce(s, true, c.h, c.window, 0.18, long(std::lround(1e-5/c.h)));
+        double sq = 0.0;
+        for (size_t i = 0; i < exp.t.size(); ++i)
+        {
+            const double d = gapAt(r, exp.t[i]) - exp.gap[i];
+            if (d == d) sq += d*d;
+        }
+        say("  %-14s apexes %.4f %.4f %.4f, RMS %.4f (reference run: %.4f %.4f %.4f, %.4f), cpu %.2f s\n",
+            c.name, r.apexes[0].gap*1e3, r.apexes[1].gap*1e3, r.apexes[2].gap*1e3,
+            std::sqrt(sq/exp.t.size())*1e3,
+            runs[0].apexes[0].gap*1e3, runs[0].apexes[1].gap*1e3, runs[0].apexes[2].gap*1e3,
+            rms[0]*1e3, r.cpu);
+    }
+    std::fclose(sum);
+    return 0;
+}
