@@ -43,7 +43,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
 #include <fstream>
 #include <sstream>
@@ -58,7 +57,7 @@ struct Scene
 {
     double d = 3e-3, rhoP = 7800.0, rhoF = 935.0, mu = 0.01, g = 9.81;
     double CA = 0.5;
-    double releaseGap = 0.20;     //!< gap at release from rest [m]
+    double releaseGap = 1.0;      //!< gap at release from rest [m]
     double eDry = 0.97;
     ElasticMaterial sphere{200e9, 0.3};   // steel
     ElasticMaterial wall{63e9, 0.23};     // glass (assumed)
@@ -131,6 +130,9 @@ private:
 };
 
 struct Sample { double t, gap, v; };
+
+//- A contact: touch and separation times (interpolated in the step) and the
+//  speeds at the steps just before and just after it (free flight)
 struct Contact { double tTouch, vTouch, tLeave = NAN, vLeave = NAN; };
 struct Apex { double t, gap; };
 
@@ -150,13 +152,15 @@ Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAft
 {
     SphereOnFlatWall law(s, basset);
     law.place(0.0, s.releaseGap + s.R(), 0.0);
-    const long window = std::max(2L, std::lround(windowTime/h));
+    // without the Basset force (K_H = 0) the history is carried but unused
+    const long window = basset ? std::max(2L, std::lround(windowTime/h)) : 2L;
     Run r;
     const std::clock_t start = std::clock();
     HistoryStepper<SphereOnFlatWall> stepper(law, HistoryMethod::windowTail, h, window, 0.0, 0.0,
                                              NewestHistoryWeight::implicit, HistoryTail::leastSquares);
     double tEnd = HUGE_VAL;
     double gapOld = law.gap(), vOld = 0.0;
+    bool flying = true;
     while (stepper.time() < tEnd)
     {
         stepper.step();
@@ -164,11 +168,11 @@ Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAft
         law.commit(t, v);
         const double gap = law.gap();
         ++r.steps;
-        if ((gapOld > 0.0) != (gap > 0.0))      // touch or leave inside the step
+        if (flying != (gap > 0.0))
         {
-            const double f = gapOld/(gapOld - gap);
-            const double tc = t - h + f*h, vc = vOld + f*(v - vOld);
-            if (gap <= 0.0)
+            const double tc = t - h*gap/(gap - gapOld);
+            flying = !flying;
+            if (!flying)
             {
                 r.contacts.push_back({tc, vOld});
                 if (r.contacts.size() == 1) tEnd = tc + tAfter;
@@ -180,11 +184,7 @@ Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAft
                 r.apexes.push_back({t, gap});
             }
         }
-        if (gap > 0.0 && !r.apexes.empty() && r.contacts.back().tLeave == r.contacts.back().tLeave
-            && gap > r.apexes.back().gap)
-        {
-            r.apexes.back() = {t, gap};
-        }
+        if (flying && !r.apexes.empty() && gap > r.apexes.back().gap) r.apexes.back() = {t, gap};
         if (r.steps % outputEvery == 0) r.curve.push_back({t, gap, v});
         gapOld = gap;
         vOld = v;
@@ -256,14 +256,16 @@ Experiment readExperiment(const std::string& file)
     return e;
 }
 
-void writeCurve(const Run& r, const std::string& file, double from, double to)
+//- Every stride-th sample from t0 + from to t0 + to
+void writeCurve(const Run& r, const std::string& file, double from, double to, size_t stride)
 {
     FILE* f = std::fopen(file.c_str(), "w");
     std::fprintf(f, "# t - t_first_contact [s]  gap [m]  v [m/s]\n");
-    for (const Sample& p : r.curve)
+    for (size_t i = 0; i < r.curve.size(); i += stride)
     {
+        const Sample& p = r.curve[i];
         const double t = p.t - r.t0();
-        if (t >= from && t <= to) std::fprintf(f, "%.6e %.6e %.6e\n", t, p.gap, p.v);
+        if (t >= from && t <= to) std::fprintf(f, "%.5e %.5e %.5e\n", t, p.gap, p.v);
     }
     std::fclose(f);
 }
@@ -272,23 +274,24 @@ void writeCurve(const Run& r, const std::string& file, double from, double to)
 
 int main(int argc, char* argv[])
 {
-    if (argc < 3)
+    if (argc != 3)
     {
-        std::fprintf(stderr, "usage: %s <gap csv> <output folder> [h] [release gap] [window]\n", argv[0]);
+        std::fprintf(stderr, "usage: %s <gap csv> <output folder>\n", argv[0]);
         return 2;
     }
     const Experiment exp = readExperiment(argv[1]);
     const std::string out = argv[2];
     if (exp.t.size() < 10) { std::fprintf(stderr, "no data in %s\n", argv[1]); return 1; }
 
-    Scene s;
-    const double h = argc > 3 ? std::atof(argv[3]) : 2e-7;
-    if (argc > 4) s.releaseGap = std::atof(argv[4]);
-    const double windowTime = argc > 5 ? std::atof(argv[5]) : 1e-4, tAfter = 0.25;
-    const long outputEvery = std::lround(1e-5/h);       // curves every 1e-5 s
+    const Scene s;
+    const double h = 5e-7;              // ~32 steps per contact at 0.585 m/s
+    const double windowTime = 1e-4;     // Basset window (200 steps) + tail
+    const double tAfter = 0.25;         // followed past the first contact
+    const long outputEvery = 20;        // samples every 1e-5 s
     HistoryTailConstants::weights(HistoryTail::leastSquares);    // fit once, untimed
 
     std::FILE* sum = std::fopen((out + "/summary.txt").c_str(), "w");
+    if (!sum) { std::fprintf(stderr, "cannot write into %s\n", out.c_str()); return 1; }
     auto say = [sum](const char* fmt, auto... args)
     {
         std::printf(fmt, args...);
@@ -315,21 +318,21 @@ int main(int argc, char* argv[])
     const Apex published[3] = {{0.037, 7.47e-3}, {0.106, 2.23e-3}, {0.140, 0.52e-3}};
 
     const SphereOnFlatWall probe(s, false);
-    say("Gondret, Lance & Petit (2002), St = 152: steel sphere d = %g mm in silicone oil, glass wall (assumed)\n",
-        s.d*1e3);
-    say("model: drag Clift-Gauvin (unbounded), C_A = %g, Basset C_H = 6 (or none), Hertz-Mindlin e_dry = %g,"
-        " no lubrication\n", s.CA, s.eDry);
-    say("release from rest at gap %.3f m; step h = %.1e s (constant), Basset window %.0e s + tail (least squares)\n",
-        s.releaseGap, h, windowTime);
-    say("terminal speed of the drag law: %.4f m/s (Re = %.1f, St = Re rho_p/(9 rho_f) = %.1f)\n",
-        terminalSpeed(s), s.rhoF*s.d*terminalSpeed(s)/s.mu,
-        s.rhoF*s.d*terminalSpeed(s)/s.mu*s.rhoP/(9.0*s.rhoF));
-    say("Hertz contact time at 0.585 m/s: %.2f us = %.0f steps; dry impact with this stepper: e = %.5f"
-        " (0.585 m/s), %.5f (0.1 m/s)\n",
+    const double Vt = terminalSpeed(s), ReT = s.rhoF*s.d*Vt/s.mu;
+    auto stokes = [&s](double v) { return s.rhoP*s.d*std::abs(v)/(9.0*s.mu); };
+    say("Gondret, Lance & Petit (2002), St = 152: steel sphere d = %g mm, %g kg/m^3, in silicone oil"
+        " (%g kg/m^3, %g Pa s) on a glass wall (assumed)\n", s.d*1e3, s.rhoP, s.rhoF, s.mu);
+    say("model: drag Clift-Gauvin (unbounded), C_A = %g, Basset C_H = 6 or none, Hertz-Mindlin with"
+        " e_dry = %g (steel on glass), no lubrication, no wall-corrected drag\n", s.CA, s.eDry);
+    say("release from rest at a gap of %.2f m; constant step h = %.1e s; Basset window %.0e s + tail"
+        " (least-squares constants)\n", s.releaseGap, h, windowTime);
+    say("terminal speed of the drag law: %.4f m/s (Re = %.1f, St = %.1f)\n", Vt, ReT, stokes(Vt));
+    say("Hertz contact time at 0.585 m/s: %.1f us = %.0f steps; a dry impact with this stepper and step"
+        " rebounds with e = %.5f at 0.585 m/s, %.5f at 0.1 m/s\n",
         probe.contactTime(0.585)*1e6, probe.contactTime(0.585)/h,
         dryRestitution(s, 0.585, h), dryRestitution(s, 0.1, h));
-    say("experiment: approach speed %.4f m/s (least-squares slope of the %d points before contact;"
-        " published ~0.585)\n\n", vExp, n);
+    say("experiment: approach speed %.4f m/s (least-squares slope of its %d points before contact)\n\n",
+        vExp, n);
 
     struct Variant { const char* name; bool basset; };
     const Variant variants[] = {{"basset", true}, {"noBasset", false}};
@@ -337,72 +340,80 @@ int main(int argc, char* argv[])
     for (int k = 0; k < 2; ++k)
     {
         runs[k] = bounce(s, variants[k].basset, h, windowTime, tAfter, outputEvery);
-        writeCurve(runs[k], out + "/curve_" + variants[k].name + ".dat", -0.05, tAfter);
+        writeCurve(runs[k], out + "/curve_" + variants[k].name + ".dat", -0.05, tAfter, 10);
     }
 
-    say("%-34s %12s %12s %12s\n", "", "experiment", "with Basset", "no Basset");
-    say("%-34s %12.4f %12.4f %12.4f\n", "impact speed [m/s]", 0.585,
-        -runs[0].contacts[0].vTouch, -runs[1].contacts[0].vTouch);
-    say("%-34s %12s %12.4f %12.4f\n", "speed leaving 1st contact [m/s]", "-",
-        runs[0].contacts[0].vLeave, runs[1].contacts[0].vLeave);
-    for (int a = 0; a < 3; ++a)
-    {
-        char label[64];
-        std::snprintf(label, sizeof label, "apex %d gap [mm] (digitized)", a + 1);
-        const double e = a < int(expApex.size()) ? expApex[a].gap*1e3 : NAN;
-        auto mm = [&](const Run& r) { return a < int(r.apexes.size()) ? r.apexes[a].gap*1e3 : NAN; };
-        auto at = [&](const Run& r) { return a < int(r.apexes.size()) ? r.apexes[a].t - r.t0() : NAN; };
-        say("%-34s %5.2f (%5.3f) %12.3f %12.3f\n", label, published[a].gap*1e3, e, mm(runs[0]), mm(runs[1]));
-        std::snprintf(label, sizeof label, "apex %d time [s] (digitized)", a + 1);
-        const double te = a < int(expApex.size()) ? expApex[a].t : NAN;
-        say("%-34s %5.3f (%5.4f) %12.4f %12.4f\n", label, published[a].t, te, at(runs[0]), at(runs[1]));
-    }
-    for (int c = 1; c < 4; ++c)
-    {
-        char label[64];
-        std::snprintf(label, sizeof label, "contact %d time [s]", c + 1);
-        auto tc = [&](const Run& r) { return c < int(r.contacts.size()) ? r.contacts[c].tTouch - r.t0() : NAN; };
-        say("%-34s %12s %12.4f %12.4f\n", label, "-", tc(runs[0]), tc(runs[1]));
-    }
-    double rms[2], worst[2];
-    for (int k = 0; k < 2; ++k)
+    auto apexGap = [](const Run& r, int a) { return a < int(r.apexes.size()) ? r.apexes[a].gap*1e3 : NAN; };
+    auto apexTime = [](const Run& r, int a) { return a < int(r.apexes.size()) ? r.apexes[a].t - r.t0() : NAN; };
+    auto rmsGap = [&exp](const Run& r, double* worst)
     {
         double sq = 0.0;
-        worst[k] = 0.0;
-        for (size_t i = 0; i < exp.t.size(); ++i)
-        {
-            const double d = gapAt(runs[k], exp.t[i]) - exp.gap[i];
-            sq += d*d;
-            worst[k] = std::max(worst[k], std::abs(d));
-        }
-        rms[k] = std::sqrt(sq/exp.t.size());
-    }
-    say("%-34s %12s %12.3f %12.3f\n", "RMS gap difference [mm]", "-", rms[0]*1e3, rms[1]*1e3);
-    say("%-34s %12s %12.3f %12.3f\n", "largest gap difference [mm]", "-", worst[0]*1e3, worst[1]*1e3);
-    say("(over the %zu digitized points, -0.016 .. 0.178 s; t = 0 at each one's first contact)\n",
-        exp.t.size());
-    say("%-34s %12s %12zu %12zu\n", "contacts within 0.25 s", "-", runs[0].contacts.size(), runs[1].contacts.size());
-    say("%-34s %12s %12.2f %12.2f\n", "CPU time [s]", "-", runs[0].cpu, runs[1].cpu);
-    say("%-34s %12s %12ld %12ld\n", "steps", "-", runs[0].steps, runs[1].steps);
-
-    // --- numerical checks: half the step, twice the Basset window ----------
-    say("\nchecks (with Basset): apex gaps [mm] and RMS [mm]\n");
-    struct Check { const char* name; double h, window; };
-    const Check checks[] = {{"h = 4e-7 s", 4e-7, windowTime}, {"window 2e-4 s", h, 2*windowTime}};
-    for (const Check& c : checks)
-    {
-        const Run r = bounce(s, true, c.h, c.window, 0.18, long(std::lround(1e-5/c.h)));
-        double sq = 0.0;
+        *worst = 0.0;
         for (size_t i = 0; i < exp.t.size(); ++i)
         {
             const double d = gapAt(r, exp.t[i]) - exp.gap[i];
-            if (d == d) sq += d*d;
+            sq += d*d;
+            *worst = std::max(*worst, std::abs(d));
         }
-        say("  %-14s apexes %.4f %.4f %.4f, RMS %.4f (reference run: %.4f %.4f %.4f, %.4f), cpu %.2f s\n",
-            c.name, r.apexes[0].gap*1e3, r.apexes[1].gap*1e3, r.apexes[2].gap*1e3,
-            std::sqrt(sq/exp.t.size())*1e3,
-            runs[0].apexes[0].gap*1e3, runs[0].apexes[1].gap*1e3, runs[0].apexes[2].gap*1e3,
-            rms[0]*1e3, r.cpu);
+        return std::sqrt(sq/exp.t.size());
+    };
+
+    say("%-32s %18s %12s %12s\n", "", "exp. (digitized)", "with Basset", "no Basset");
+    say("%-32s %18.3f %12.4f %12.4f\n", "impact speed [m/s]", 0.585,
+        -runs[0].contacts[0].vTouch, -runs[1].contacts[0].vTouch);
+    for (int a = 0; a < 3; ++a)
+    {
+        const double e = a < int(expApex.size()) ? expApex[a].gap*1e3 : NAN;
+        const double te = a < int(expApex.size()) ? expApex[a].t : NAN;
+        char label[64];
+        std::snprintf(label, sizeof label, "apex %d gap [mm]", a + 1);
+        say("%-32s %8.2f (%7.3f) %12.3f %12.3f\n", label, published[a].gap*1e3, e,
+            apexGap(runs[0], a), apexGap(runs[1], a));
+        std::snprintf(label, sizeof label, "apex %d time [s]", a + 1);
+        say("%-32s %8.3f (%7.4f) %12.4f %12.4f\n", label, published[a].t, te,
+            apexTime(runs[0], a), apexTime(runs[1], a));
+    }
+    double worst[2];
+    const double rms[2] = {rmsGap(runs[0], &worst[0]), rmsGap(runs[1], &worst[1])};
+    say("%-32s %18s %12.3f %12.3f\n", "RMS gap difference [mm]", "-", rms[0]*1e3, rms[1]*1e3);
+    say("%-32s %18s %12.3f %12.3f\n", "largest gap difference [mm]", "-", worst[0]*1e3, worst[1]*1e3);
+    say("  (over its %zu points, t = %.4f .. %.4f s; t = 0 at the first contact of each;"
+        " published values first, digitized maxima in brackets)\n",
+        exp.t.size(), exp.t.front(), exp.t.back());
+    say("%-32s %18s %12.2f %12.2f\n", "CPU time [s]", "-", runs[0].cpu, runs[1].cpu);
+    say("%-32s %18s %12ld %12ld\n", "steps (release to +0.25 s)", "-", runs[0].steps, runs[1].steps);
+
+    for (int k = 0; k < 2; ++k)
+    {
+        say("\ncontacts %s (t after the first; St = rho_p d v_in/(9 mu); e = v_out/v_in over the"
+            " contact):\n", k == 0 ? "with Basset" : "without Basset");
+        for (size_t c = 0; c < runs[k].contacts.size() && c < 6; ++c)
+        {
+            const Contact& C = runs[k].contacts[c];
+            say("  %zu: t = %.4f s, v_in = %.4f m/s, St = %5.1f, v_out = %.4f m/s, e = %.4f, %.1f us\n",
+                c + 1, C.tTouch - runs[k].t0(), -C.vTouch, stokes(C.vTouch), C.vLeave,
+                -C.vLeave/C.vTouch, (C.tLeave - C.tTouch)*1e6);
+        }
+    }
+
+    // --- numerical checks and the release height (with Basset) ------------
+    say("\nchecks, with Basset: impact speed [m/s], apex gaps [mm], RMS [mm]\n");
+    say("  %-26s %.4f, %.3f %.3f %.3f, %.3f\n", "this run", -runs[0].contacts[0].vTouch,
+        apexGap(runs[0], 0), apexGap(runs[0], 1), apexGap(runs[0], 2), rms[0]*1e3);
+    struct Check { const char* name; double h, window, release; };
+    const Check checks[] = {
+        {"h = 1e-6 s", 1e-6, windowTime, s.releaseGap},
+        {"h = 1e-6 s, window 5e-4 s", 1e-6, 5e-4, s.releaseGap},
+        {"h = 1e-6 s, release 0.2 m", 1e-6, windowTime, 0.2},
+        {"h = 1e-6 s, release 3 m", 1e-6, windowTime, 3.0}};
+    for (const Check& c : checks)
+    {
+        Scene sc = s;
+        sc.releaseGap = c.release;
+        const Run r = bounce(sc, true, c.h, c.window, 0.18, std::lround(1e-5/c.h));
+        double w;
+        say("  %-26s %.4f, %.3f %.3f %.3f, %.3f  (cpu %.1f s)\n", c.name, -r.contacts[0].vTouch,
+            apexGap(r, 0), apexGap(r, 1), apexGap(r, 2), rmsGap(r, &w)*1e3, r.cpu);
     }
     std::fclose(sum);
     return 0;
