@@ -11,13 +11,22 @@
 // F_C the Hertz–Mindlin wall force with Tsuji damping calibrated to e_dry
 // (riser::HertzMindlin). Each run is done with and without F_H. The model
 // has no lubrication and no wall correction of the drag: the sphere meets
-// the wall with its free-fall speed and leaves it with e_dry times that.
+// the wall with its free-fall speed and leaves it with about e_dry times
+// that (0.968 with Basset, 0.971 without: the added mass and the history
+// take part in the 16 us contact that was calibrated for m_p alone).
+//
+// Release from rest at a gap of 1 m. Without the Basset force the sphere
+// reaches its terminal speed within 0.2 m; with it, it approaches that speed
+// only as t^-1/2 (2% below it after 1 m, 1% after 3 m), so the release
+// height is one of the checks the program prints.
 //
 // Position and velocity share the stepper's trapezoidal rule: the law keeps
 // the last committed state (t_n, z_n, v_n) and evaluates the force at
 // z = z_n + (t - t_n)(v_n + v)/2, so the stepper's fixed-point iteration on
 // v_{n+1} solves the contact implicitly. One constant step for the whole
-// run (the history's grid): 2e-7 s, about 1/70 of the Hertz contact time.
+// run (the history's grid): 5e-7 s, 1/32 of the Hertz contact time; a dry
+// impact then rebounds with e = 0.9699 for 0.97. The history costs O(window)
+// per step, so the 4e6 steps of a run take a few seconds.
 //
 // Numbers and their sources:
 //   sphere d = 3 mm, 7800 kg/m^3; oil 935 kg/m^3, mu = 0.01 Pa s; St = 152:
@@ -33,7 +42,9 @@
 //   experiment: the digitized gap h(t) given as the first argument.
 //
 // usage: gondret <gap csv> <output folder>
-// writes <output folder>/curve_basset.dat, curve_noBasset.dat, summary.txt
+// writes <output folder>/curve_basset.dat and curve_noBasset.dat (t after
+// the first contact, gap, v) and prints the comparison (Allrun keeps it in
+// results/summary.txt)
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "basset/bassetCoefficient.hpp"
 #include "contact/hertzMindlin.hpp"
@@ -194,21 +205,19 @@ Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAft
 }
 
 //- Restitution of one impact at speed v without fluid, same stepper and step
+//  (the speed at the first step after the contact: there is no other force)
 double dryRestitution(const Scene& s, double v, double h)
 {
     SphereOnFlatWall law(s, false, false);
     law.place(0.0, s.R() + 0.5*v*h, -v);       // half a step above the wall
     HistoryStepper<SphereOnFlatWall> stepper(law, HistoryMethod::windowTail, h, 2, -v);
-    for (long k = 0; k < 100000000L; ++k)
+    bool touched = false;
+    for (long k = 0; k < 10000000L; ++k)
     {
-        const double gapOld = law.gap(), vOld = stepper.velocity();
         stepper.step();
         law.commit(stepper.time(), stepper.velocity());
-        if (law.gap() > 0.0 && gapOld <= 0.0)
-        {
-            const double f = gapOld/(gapOld - law.gap());
-            return (vOld + f*(stepper.velocity() - vOld))/v;
-        }
+        touched = touched || law.gap() <= 0.0;
+        if (touched && law.gap() > 0.0) return stepper.velocity()/v;
     }
     return NAN;
 }
@@ -290,13 +299,7 @@ int main(int argc, char* argv[])
     const long outputEvery = 20;        // samples every 1e-5 s
     HistoryTailConstants::weights(HistoryTail::leastSquares);    // fit once, untimed
 
-    std::FILE* sum = std::fopen((out + "/summary.txt").c_str(), "w");
-    if (!sum) { std::fprintf(stderr, "cannot write into %s\n", out.c_str()); return 1; }
-    auto say = [sum](const char* fmt, auto... args)
-    {
-        std::printf(fmt, args...);
-        std::fprintf(sum, fmt, args...);
-    };
+    auto say = [](const char* fmt, auto... args) { std::printf(fmt, args...); };
 
     // --- experiment: approach speed, apexes (local maxima above 0.3 mm) ----
     double st = 0, sg = 0, stt = 0, stg = 0;
@@ -415,6 +418,5 @@ int main(int argc, char* argv[])
         say("  %-26s %.4f, %.3f %.3f %.3f, %.3f  (cpu %.1f s)\n", c.name, -r.contacts[0].vTouch,
             apexGap(r, 0), apexGap(r, 1), apexGap(r, 2), rmsGap(r, &w)*1e3, r.cpu);
     }
-    std::fclose(sum);
     return 0;
 }

@@ -55,8 +55,17 @@ Description
     firstPeriodsOnly, bothWallsEveryPeriod, other (MODEL.md section 4); a
     case that fails says so in its status and the others go on.
 
+    Force budget (-budget): the case's first release run with every force,
+    then once with each of drag, lift, added mass and fluid stress dropped;
+    postProcessing/riserParticle/budget.dat has, per force, its RMS and
+    largest magnitude over the rows relative to the buoyant weight W (the
+    added mass as C_A m_f (Du/Dt - dv/dt); the wall contact's too, which is
+    never dropped), and with it dropped the change of the lifting distance
+    at endTime and the largest change of the relative trajectory (in D),
+    and the CPU time against the full model's.
+
 Usage
-    riserParticle [-integrator adaptive|paper] [-sweep]
+    riserParticle [-integrator adaptive|paper] [-sweep | -budget]
 
 \*---------------------------------------------------------------------------*/
 
@@ -66,6 +75,8 @@ Usage
 #include "riserScene.H"
 
 #include <atomic>
+#include <functional>
+#include <vector>
 #include <chrono>
 #include <memory>
 #include <stdexcept>
@@ -480,6 +491,175 @@ void runSweep(const Time& runTime, const riserScene& scene, const integratorChoi
         << " threads in " << wall << " s; wrote " << dir/"sweep.dat" << endl;
 }
 
+//- A run's relative trajectory (x - x_c, y, z) at the rows, and its time
+struct budgetRun
+{
+    std::vector<riser::Vector> rows;
+    double cpu = 0;
+    bool failed = false;
+};
+
+
+budgetRun runForBudget
+(
+    const riserScene& scene, const riser::ForceSelection& forces,
+    const riserRelease& r, const integratorChoice& integ,
+    const std::function<void(double, const riser::ParticleState&,
+                             const riser::RiserParticleLaw&)>& look = {},
+    const std::function<void(const riser::ContactRecord&,
+                             const riser::RiserParticleLaw&)>& touch = {}
+)
+{
+    riserScene s = scene;
+    s.forces = forces;
+    const riser::RiserParticleLaw law = s.law(r);
+    budgetRun out;
+    riser::Observer obs;
+    obs.row = [&](double t, const riser::ParticleState& p)
+    {
+        out.rows.push_back(p.x - riser::Vector(s.riser.axisPosition(t), 0, 0));
+        if (look) look(t, p, law);
+    };
+    obs.contact = [&](const riser::ContactRecord& c)
+    {
+        if (touch) touch(c, law);
+    };
+    const auto start = std::chrono::steady_clock::now();
+    try
+    {
+        integ.run(law, r.t0, initialState(r), scene.endTime, scene.deltaT, obs);
+    }
+    catch (const riser::IntegrationFailure&)
+    {
+        out.failed = true;
+    }
+    out.cpu = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return out;
+}
+
+
+//- The force budget of the case's first release: each force's RMS and
+//  largest magnitude over the rows relative to the buoyant weight, and what
+//  dropping it changes (lifting distance and relative trajectory at the end
+//  of the run, in D) and saves (CPU time)
+void runBudget(const Time& runTime, const riserScene& scene, const integratorChoice& integ)
+{
+    const riserRelease& r = scene.releases.first();
+    const scalar D = scene.riser.diameter();
+    struct tally { scalar sum2 = 0, max = 0; };
+    // drag, lift, added mass (C_A m_f (Du/Dt - dv/dt)), fluid stress, contact
+    const wordList names
+    ({
+        "wallCorrectedDrag", "riserSaffmanMeiLift", "riserAddedMass", "riserFluidStress",
+        "riserWallContact"
+    });
+    List<tally> t(names.size());
+    label n = 0;
+    scalar weight = 0, impulse = 0, peak = 0;
+    const budgetRun full = runForBudget
+    (
+        scene, scene.forces, r, integ,
+        [&](double time, const riser::ParticleState& p, const riser::RiserParticleLaw& law)
+        {
+            const riser::ForceReport f = law.forces(time, p);
+            const riser::Vector a = law.acceleration(time, p);
+            const riser::Vector am =
+                scene.forces.addedMass
+              ? riser::Vector
+                (
+                    scene.forces.CA*law.fluidMass()
+                   *(scene.riser.materialDerivative(p.x, time) - a)
+                )
+              : riser::Vector::Zero().eval();
+            const scalar m[] =
+                {f.drag.norm(), f.lift.norm(), am.norm(), f.fluidStress.norm(), f.contact.norm()};
+            forAll(t, k)
+            {
+                t[k].sum2 += m[k]*m[k];
+                t[k].max = max(t[k].max, m[k]);
+            }
+            weight = mag(law.mass() - law.fluidMass())*mag(scene.g);
+            ++n;
+        },
+        [&](const riser::ContactRecord& c, const riser::RiserParticleLaw& law)
+        {
+            // contacts last microseconds, between rows: the wall force's
+            // time mean from the normal impulses, its peak from the
+            // largest overlap (the elastic part, k_n delta^(3/2))
+            impulse += law.mass()*(c.impactSpeed + c.reboundSpeed);
+            const riser::ContactBody body{law.radius(), law.mass()};
+            peak = max
+            (
+                peak,
+                law.contactLaw().normalStiffness(body)*std::pow(c.maxOverlap, 1.5)
+            );
+        }
+    );
+    if (full.failed || full.rows.empty())
+    {
+        FatalErrorInFunction
+            << "the full model failed for particle 0: no budget" << exit(FatalError);
+    }
+    // the full model's time without the tallies
+    const double fullCpu = runForBudget(scene, scene.forces, r, integ).cpu;
+    const scalar duration = scene.endTime - r.t0;
+    t[4].sum2 = n*sqr(impulse/max(duration, SMALL));   // reported as its mean
+    t[4].max = peak;
+
+    const fileName dir = runTime.globalPath()/"postProcessing"/"riserParticle";
+    mkDir(dir);
+    OFstream os(dir/"budget.dat");
+    os.precision(6);
+    os  << "# riserParticle force budget, particle 0, integrator " << integ.name
+        << ", to t = " << scene.endTime << " s; buoyant weight " << weight << " N" << nl
+        << "# riserWallContact: the time mean of its normal force from the"
+        << " impulses, and its elastic peak k_n delta_max^(3/2)" << nl
+        << "# force rms/W max/W dropped:liftChange/D dropped:largestTrajectoryChange/D"
+        << " dropped:cpu/full (full model: " << fullCpu << " s, lift "
+        << (full.rows.back().z() - full.rows.front().z())/D << " D)" << nl;
+    Info<< "force budget (particle 0; W = buoyant weight " << weight << " N):" << nl;
+    forAll(names, k)
+    {
+        riser::ForceSelection dropped = scene.forces;
+        bool* flag =
+            k == 0 ? &dropped.drag : k == 1 ? &dropped.lift : k == 2 ? &dropped.addedMass
+          : k == 3 ? &dropped.fluidStress : nullptr;
+        os  << names[k] << ' ' << std::sqrt(t[k].sum2/max(n, 1))/weight << ' '
+            << t[k].max/weight;
+        Info<< "    " << names[k] << ": rms " << std::sqrt(t[k].sum2/max(n, 1))/weight
+            << " W, max " << t[k].max/weight << " W";
+        if (flag && *flag)
+        {
+            *flag = false;
+            const budgetRun d = runForBudget(scene, dropped, r, integ);
+            if (d.failed || d.rows.size() != full.rows.size())
+            {
+                os  << " failed failed " << d.cpu/fullCpu << nl;
+                Info<< "; dropped: the integration failed" << nl;
+                continue;
+            }
+            scalar worst = 0;
+            forAll(d.rows, i)
+            {
+                worst = max(worst, scalar((d.rows[i] - full.rows[i]).norm()));
+            }
+            const scalar lift =
+                ((d.rows.back().z() - d.rows.front().z())
+               - (full.rows.back().z() - full.rows.front().z()))/D;
+            os  << ' ' << lift << ' ' << worst/D << ' ' << d.cpu/fullCpu << nl;
+            Info<< "; dropped: lift changes by " << lift << " D, trajectory by up to "
+                << worst/D << " D, CPU x " << d.cpu/fullCpu << nl;
+        }
+        else
+        {
+            // not selected, or the contact (the particle would leave the pipe)
+            os  << " - - -" << nl;
+            Info<< nl;
+        }
+    }
+    Info<< "wrote " << dir/"budget.dat" << endl;
+}
+
 } // End anonymous namespace
 
 
@@ -493,6 +673,12 @@ int main(int argc, char *argv[])
     argList::noParallel();
     argList::addOption("integrator", "name", "adaptive | paper (overrides system/riserParticleDict)");
     argList::addBoolOption("sweep", "run the (A, f) grid of system/riserSweepDict");
+    argList::addBoolOption
+    (
+        "budget",
+        "force budget of the first particle: each force against the buoyant"
+        " weight, and what dropping it changes"
+    );
 
     #include "setRootCase.H"
     #include "createTime.H"
@@ -512,6 +698,10 @@ int main(int argc, char *argv[])
         if (args.found("sweep"))
         {
             runSweep(runTime, scene, integ);
+        }
+        else if (args.found("budget"))
+        {
+            runBudget(runTime, scene, integ);
         }
         else
         {
