@@ -1,0 +1,97 @@
+"""Summarise `perf script` call stacks (perf record --call-graph dwarf):
+self time and inclusive time per function (template arguments folded to
+<>), plus the callers of selected functions.
+
+usage: perfStacks.py <perf script output> [top] [function whose callers to list ...]
+
+License: GPL-3.0-or-later
+"""
+import collections
+import re
+import sys
+
+
+def simplify(symbol):
+    """Fold template arguments and drop offsets: Foam::X<...>::f."""
+    symbol = re.sub(r"\+0x[0-9a-f]+$", "", symbol.strip())
+    out, depth = [], 0
+    for ch in symbol:
+        if ch == "<":
+            if depth == 0:
+                out.append("<>")
+            depth += 1
+        elif ch == ">":
+            depth = max(0, depth - 1)
+        elif depth == 0:
+            out.append(ch)
+    s = "".join(out)
+    s = s.replace(" (inlined)", "")
+    s = re.sub(r"\(.*\)$", "", s) if not s.startswith("operator") else s
+    return s.strip()
+
+
+def read_stacks(path):
+    """Yield one stack (list of (function, library), innermost first) per sample."""
+    stack = []
+    for line in open(path, errors="replace"):
+        line = line.rstrip("\n")
+        if not line.strip():
+            if stack:
+                yield stack
+            stack = []
+            continue
+        if not line.startswith((" ", "\t")):
+            continue            # the sample's header line
+        parts = line.strip().split(None, 1)
+        if len(parts) < 2:
+            continue
+        rest = parts[1]
+        m = re.match(r"(.*) \(([^()]*)\)$", rest)
+        sym, dso = (m.group(1), m.group(2)) if m else (rest, "?")
+        inlined = sym.endswith("(inlined)")
+        stack.append((simplify(sym), dso.rsplit("/", 1)[-1], inlined))
+    if stack:
+        yield stack
+
+
+def main():
+    path = sys.argv[1]
+    top = int(sys.argv[2]) if len(sys.argv) > 2 else 25
+    targets = sys.argv[3:]
+    self_count = collections.Counter()
+    incl_count = collections.Counter()
+    callers = {t: collections.Counter() for t in targets}
+    total = 0
+    for stack in read_stacks(path):
+        total += 1
+        self_count[(stack[0][0], stack[0][1])] += 1
+        seen = set()
+        for f, dso, _ in stack:
+            if f not in seen:
+                incl_count[f] += 1
+                seen.add(f)
+        for t in targets:
+            for i, (f, _, _) in enumerate(stack):
+                if f == t:
+                    # the first caller that is not the target or an inlined helper of it
+                    j = i + 1
+                    while j < len(stack) and (stack[j][0] == t or stack[j][0].startswith("Foam::particle::")):
+                        j += 1
+                    callers[t][stack[j][0] if j < len(stack) else "?"] += 1
+                    break
+    print("samples: %d" % total)
+    print("\nself time (top %d)" % top)
+    for (f, dso), c in self_count.most_common(top):
+        print("%6.2f%%  %-28s %s" % (100.0 * c / total, dso[:28], f))
+    print("\ninclusive time (top %d)" % top)
+    for f, c in incl_count.most_common(top):
+        print("%6.2f%%  %s" % (100.0 * c / total, f))
+    for t in targets:
+        n = sum(callers[t].values())
+        print("\ncallers of %s (%.2f%% of all samples)" % (t, 100.0 * n / max(total, 1)))
+        for f, c in callers[t].most_common(15):
+            print("%6.2f%%  %s" % (100.0 * c / total, f))
+
+
+if __name__ == "__main__":
+    main()

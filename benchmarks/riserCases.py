@@ -1,0 +1,384 @@
+"""riserFoam benchmarks: the cases.
+
+Writes OpenFOAM case directories for the benchmarks of benchmarks/Allrun:
+one riser mesh (bin/riserMesh O-grid, cyclic ends), copied into every case,
+the same particles (a seeded list of positions) and the same number of
+steps, for
+
+  - stock solvers (icoUncoupledKinematicParcelFoam on the static mesh,
+    icoUncoupledKinematicParcelDyMFoam on the moving mesh) with stock
+    sphereDrag + gravity, optionally the stock SaffmanMeiLiftForce,
+    virtualMass and pressureGradient, collisionModel none;
+  - riserParcelFoam with the paper's forces (wallCorrectedDrag,
+    riserSaffmanMeiLift, riserAddedMass, riserFluidStress, riserFrame,
+    gravity), optionally riserBasset (windowTail), and the wall contact
+    riserWallContact, in the lab frame (moving mesh) or the riser frame
+    (static mesh).
+
+No per-particle output: no cloud function objects in any case.
+
+License: GPL-3.0-or-later
+"""
+import math
+import os
+import random
+import shutil
+import subprocess
+
+# The riser of the tutorials (constant/riserProperties): D = 0.1 m,
+# u_cm = 1 m/s, A = 0.1 m, f = 3 Hz, phi0 = 0.
+D = 0.1
+R = 0.5 * D
+U_CENTRE = 1.0
+AMPLITUDE = 0.1
+FREQUENCY = 3.0
+OMEGA = 2.0 * math.pi * FREQUENCY
+RISER_SPEED0 = AMPLITUDE * OMEGA          # wall velocity at t = 0 (lab)
+
+# The particles: the tutorials' ore
+PARTICLE_D = 0.01
+PARTICLE_RHO = 2000.0
+
+HEADER = """FoamFile
+{
+    version     2.0;
+    format      ascii;
+    class       %s;
+    object      %s;
+}
+// written by benchmarks/riserCases.py
+"""
+
+
+def header(cls, obj):
+    return HEADER % (cls, obj)
+
+
+def run(cmd, log, cwd=None):
+    """Run a command to a log file; raise with the log's tail on failure."""
+    with open(log, "w") as f:
+        r = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=cwd)
+    if r.returncode != 0:
+        tail = open(log).read()[-2000:]
+        raise RuntimeError("%s failed (%s):\n%s" % (" ".join(cmd), log, tail))
+
+
+# ---------------------------------------------------------------- the mesh
+
+def make_mesh(folder, length, n, nz):
+    """The riser O-grid (cyclic ends) with blockMesh, and the cell and wall
+    face centres (for the stock solvers' U field). Returns the cell count."""
+    riser_dir = os.environ["RISER_DIR"]
+    os.makedirs(os.path.join(folder, "system"), exist_ok=True)
+    os.makedirs(os.path.join(folder, "constant"), exist_ok=True)
+    write_system(folder, "icoUncoupledKinematicParcelFoam", steps=1, dt=1e-4,
+                 write_at_end=False)
+    run([os.path.join(riser_dir, "bin", "riserMesh"), "-D", repr(D), "-L", repr(length),
+         "-n", str(n), "-nz", str(nz), "-ends", "cyclic", "-case", folder],
+        os.path.join(folder, "log.riserMesh"))
+    run(["blockMesh", "-case", folder], os.path.join(folder, "log.blockMesh"))
+    os.makedirs(os.path.join(folder, "0"), exist_ok=True)
+    run(["postProcess", "-func", "writeCellCentres", "-time", "0", "-case", folder],
+        os.path.join(folder, "log.writeCellCentres"))
+    return len(read_vectors(os.path.join(folder, "0", "C"), "internalField"))
+
+
+def read_vectors(path, entry):
+    """The nonuniform vector list of 'entry' (internalField or a patch's
+    value) in an ascii field file."""
+    text = open(path).read()
+    if entry != "internalField":
+        start = text.index("boundaryField")
+        text = text[text.index(entry, start):]
+    at = text.index("nonuniform List<vector>", text.index("internalField") if entry == "internalField" else 0)
+    body = text[at:]
+    n = int(body.split()[2])
+    first = body.index("(")
+    values = body[first + 1:].split(None, 3 * n)
+    out = []
+    for i in range(n):
+        out.append(tuple(float(values[3 * i + k].strip("()")) for k in range(3)))
+    return out
+
+
+def poiseuille(x, frame):
+    """The carrier at t = 0: Poiseuille about the axis x_c(0) = 0, plus the
+    riser's velocity in the lab frame."""
+    r2 = x[0] ** 2 + x[1] ** 2
+    ux = RISER_SPEED0 if frame == "lab" else 0.0
+    return (ux, 0.0, U_CENTRE * max(0.0, 1.0 - r2 / (R * R)))
+
+
+def write_U(case, mesh, frame):
+    """0/U: the carrier at t = 0 on the cells, the wall's velocity on the
+    wall. riserParcelFoam overwrites it at every step; the stock solvers
+    keep it (on the moving mesh it moves with the cells)."""
+    centres = read_vectors(os.path.join(mesh, "0", "C"), "internalField")
+    wall = (RISER_SPEED0 if frame == "lab" else 0.0, 0.0, 0.0)
+    lines = [header("volVectorField", "U"),
+             "dimensions [0 1 -1 0 0 0 0];",
+             "internalField nonuniform List<vector> %d\n(" % len(centres)]
+    lines += ["(%.12g %.12g %.12g)" % poiseuille(c, frame) for c in centres]
+    lines += [");",
+              "boundaryField",
+              "{",
+              "    riserWall { type fixedValue; value uniform (%.12g %.12g %.12g); }" % wall,
+              "    bottom { type cyclic; }",
+              "    top { type cyclic; }",
+              "}"]
+    os.makedirs(os.path.join(case, "0"), exist_ok=True)
+    with open(os.path.join(case, "0", "U"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+# ------------------------------------------------------------ the particles
+
+def positions(n, seed=1912, margin=0.005, length=0.5):
+    """n positions, uniform over the cross-section r <= R - d/2 - margin and
+    along the riser (away from its ends by one diameter): the same list
+    (and the same first n) for every case. The margin keeps the particles
+    off the wall during a benchmark's few milliseconds."""
+    rng = random.Random(seed)
+    rmax = R - 0.5 * PARTICLE_D - margin
+    out = []
+    for _ in range(n):
+        r = rmax * math.sqrt(rng.random())
+        t = 2.0 * math.pi * rng.random()
+        z = 0.01 + (length - 0.02) * rng.random()
+        out.append((r * math.cos(t), r * math.sin(t), z))
+    return out
+
+
+def write_positions(case, n, length):
+    lines = [header("vectorField", "kinematicCloudPositions"), "("]
+    lines += ["(%.12g %.12g %.12g)" % p for p in positions(n, length=length)]
+    lines.append(")")
+    with open(os.path.join(case, "constant", "kinematicCloudPositions"), "w") as f:
+        f.write("\n".join(lines) + "\n")
+
+
+# --------------------------------------------------------------- the models
+
+STOCK_FORCES = """        sphereDrag;
+        gravity;
+"""
+
+STOCK_CARRIER_FORCES = """        SaffmanMeiLiftForce { U U; }
+        virtualMass { Cvm 0.5; }
+        pressureGradient { U U; }
+"""
+
+RISER_FORCES = """        wallCorrectedDrag { law paper; pipeDiameter 0.1; }
+        riserSaffmanMeiLift;
+        riserAddedMass { CA 0.5; }
+        riserFluidStress;
+        riserFrame;
+        gravity;
+"""
+
+RISER_BASSET = """        riserBasset
+        {
+            coefficient     michaelidesRoig;
+            method          windowTail;
+            windowTime      0.01;
+        }
+"""
+
+STOCK_COLLISION = "    collisionModel  none;\n"
+
+RISER_COLLISION = """    collisionModel  riserWallContact;
+    riserWallContactCoeffs
+    {
+        wall { youngsModulus 2e11; poissonsRatio 0.3; }
+        normalRestitution       0.76;
+        tangentialRestitution   0.7;
+        friction                0.2;
+        normalForce             tensionAllowed;
+        rotation                off;
+        stepsPerContact         40;
+    }
+"""
+
+CLOUD = """solution
+{
+    active          true;
+    coupled         false;
+    transient       yes;
+    cellValueSourceCorrection off;
+    maxCo           0.3;
+
+    interpolationSchemes
+    {
+        rho             cell;
+        U               cellPoint;
+        mu              cell;
+        curlUcDt        cellPoint;
+        DUcDt           cellPoint;
+    }
+
+    integrationSchemes
+    {
+        U               Euler;
+    }
+}
+
+constantProperties
+{
+    rho0            %(rho)g;
+    youngsModulus   6e10;
+    poissonsRatio   0.26;
+}
+
+subModels
+{
+    particleForces
+    {
+%(forces)s    }
+
+    injectionModels
+    {
+        release
+        {
+            type            manualInjection;
+            massTotal       0;
+            parcelBasisType fixed;
+            nParticle       1;
+            SOI             0;
+            positionsFile   "kinematicCloudPositions";
+            U0              (%(U0x).12g 0 0.68);
+            sizeDistribution
+            {
+                type        fixedValue;
+                fixedValueDistribution { value %(d)g; }
+            }
+        }
+    }
+
+    dispersionModel none;
+    patchInteractionModel standardWallInteraction;
+    standardWallInteractionCoeffs { type rebound; }
+    surfaceFilmModel none;
+    stochasticCollisionModel none;
+%(collision)s}
+
+// no cloud functions: no per-particle output (riserParticleTable,
+// particleForceFields) in a benchmark
+cloudFunctions {}
+"""
+
+
+def write_system(case, application, steps, dt, write_at_end):
+    os.makedirs(os.path.join(case, "system"), exist_ok=True)
+    control = header("dictionary", "controlDict") + """
+application     %s;
+libs            ("libriserLagrangian.so");
+startFrom       startTime;
+startTime       0;
+stopAt          endTime;
+endTime         %.10g;
+deltaT          %g;
+writeControl    timeStep;
+writeInterval   %d;
+purgeWrite      0;
+writeFormat     ascii;
+writePrecision  17;
+writeCompression off;
+timeFormat      general;
+timePrecision   10;
+runTimeModifiable no;
+""" % (application, steps * dt, dt, steps if write_at_end else 100000000)
+    with open(os.path.join(case, "system", "controlDict"), "w") as f:
+        f.write(control)
+    with open(os.path.join(case, "system", "fvSchemes"), "w") as f:
+        f.write(header("dictionary", "fvSchemes") + """
+ddtSchemes           { default Euler; }
+gradSchemes          { default Gauss linear; }
+divSchemes           { default none; }
+laplacianSchemes     { default none; }
+interpolationSchemes { default linear; }
+""")
+    with open(os.path.join(case, "system", "fvSolution"), "w") as f:
+        f.write(header("dictionary", "fvSolution") + "\nsolvers {}\nPIMPLE {}\n")
+
+
+class Variant:
+    """One solver with one set of models, in one frame.
+
+    solver:  'stock' or 'riser'
+    frame:   'lab' (moving mesh) or 'riser' (static mesh)
+    forces:  'drag' (stock sphereDrag + gravity), 'dragCarrier' (plus the
+             stock lift, virtual mass and pressure gradient), 'paper' (the
+             riser forces without Basset), 'paperBasset' (with riserBasset)
+    """
+
+    def __init__(self, key, solver, frame, forces, label):
+        self.key, self.solver, self.frame, self.forces = key, solver, frame, forces
+        self.label = label
+
+    @property
+    def application(self):
+        if self.solver == "riser":
+            return "riserParcelFoam"
+        return ("icoUncoupledKinematicParcelDyMFoam" if self.frame == "lab"
+                else "icoUncoupledKinematicParcelFoam")
+
+    def cloud_properties(self):
+        forces = {
+            "drag": STOCK_FORCES,
+            "dragCarrier": STOCK_FORCES + STOCK_CARRIER_FORCES,
+            "paper": RISER_FORCES,
+            "paperBasset": RISER_FORCES + RISER_BASSET,
+        }[self.forces]
+        collision = RISER_COLLISION if self.solver == "riser" else STOCK_COLLISION
+        return header("dictionary", "kinematicCloudProperties") + "\n" + CLOUD % {
+            "rho": PARTICLE_RHO, "d": PARTICLE_D, "forces": forces,
+            "collision": collision,
+            # released with the riser's velocity in the lab, at rest
+            # relative to it in the riser frame; 0.68 m/s upward
+            "U0x": RISER_SPEED0 if self.frame == "lab" else 0.0,
+        }
+
+
+def make_case(case, variant, mesh, n, steps, dt, length, write_at_end=False):
+    """A case directory for variant with n particles and steps steps of dt."""
+    if os.path.isdir(case):
+        shutil.rmtree(case)
+    os.makedirs(os.path.join(case, "constant"))
+    shutil.copytree(os.path.join(mesh, "constant", "polyMesh"),
+                    os.path.join(case, "constant", "polyMesh"))
+    write_system(case, variant.application, steps, dt, write_at_end)
+    write_U(case, mesh, variant.frame)
+    write_positions(case, n, length)
+    c = os.path.join(case, "constant")
+    with open(os.path.join(c, "kinematicCloudProperties"), "w") as f:
+        f.write(variant.cloud_properties())
+    with open(os.path.join(c, "g"), "w") as f:
+        f.write(header("uniformDimensionedVectorField", "g")
+                + "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.8);\n")
+    with open(os.path.join(c, "transportProperties"), "w") as f:
+        f.write(header("dictionary", "transportProperties")
+                + "rhoInf 1000;\ntransportModel Newtonian;\nnu 1e-06;\n")
+    with open(os.path.join(c, "turbulenceProperties"), "w") as f:
+        f.write(header("dictionary", "turbulenceProperties") + "simulationType laminar;\n")
+    # the riser (read by riserParcelFoam and by the mesh motion riserOscillation)
+    with open(os.path.join(c, "riserProperties"), "w") as f:
+        f.write(header("dictionary", "riserProperties") + """
+D           %g;
+uCentre     %g;
+A           %g;
+f           %g;
+phi0        0;
+carrier     exact;
+frame       %s;
+""" % (D, U_CENTRE, AMPLITUDE, FREQUENCY, variant.frame))
+    if variant.frame == "lab":
+        # the same solid-body motion for both solvers: riserOscillation
+        # (libriserLagrangian, loaded through controlDict's libs), x_c(t)
+        # of constant/riserProperties
+        with open(os.path.join(c, "dynamicMeshDict"), "w") as f:
+            f.write(header("dictionary", "dynamicMeshDict") + """
+dynamicFvMesh           dynamicMotionSolverFvMesh;
+motionSolverLibs        (fvMotionSolvers);
+motionSolver            solidBody;
+solidBodyMotionFunction riserOscillation;
+""")
