@@ -112,6 +112,12 @@ class RiserCase:
                        r"windowTime %r; }\n\1riserFluidStress;" % windowTime)
         return self
 
+    def engine_settings(self, text):
+        """system/riserParticleDict's entries (integrator, writeFrom, ...)"""
+        open(os.path.join(self.path, "system/riserParticleDict"), "w").write(
+            HEADER % "riserParticleDict" + text + "\n")
+        return self
+
     def _run(self, command, log):
         with open(os.path.join(self.path, log), "w") as out:
             done = subprocess.run(command, cwd=self.path, stdout=out, stderr=subprocess.STDOUT)

@@ -1,7 +1,9 @@
 """The paper's Figs. 8-13: the riser frequency. A = 1, f = 0.025 .. 0.4,
 release at x_p0 = y_p0 = 0.2 D with the local carrier speed, mesh-free:
 relative lateral velocity, vertical velocity, lifting distance over a fixed
-time, and each contact's largest overlap and impact speed. Claims: the
+time, each contact's largest overlap and impact speed, and the inside of one
+contact at f = 0.3 (the fourth; rows every 0.2 us): the overlaps delta_n and
+delta_t and the vertical velocity. Claims: the
 vertical velocity oscillates at twice the riser frequency; the relative
 lateral velocity grows and the lifting distance falls with f; contacts
 drop the vertical velocity.
@@ -19,7 +21,7 @@ for f in fs:
             .run_for(duration, 2e-3).releases([(0.2, 0.2)]).engine())
     runs[f] = (case.table()[0], case.contacts())
 
-fig, ax = plt.subplots(2, 3, figsize=(16, 8))
+fig, ax = plt.subplots(3, 3, figsize=(16, 12))
 late = {}
 for f in fs:
     c, contacts = runs[f]
@@ -50,6 +52,20 @@ ax[1, 2].plot(fs, [late[f][1] / late[fs[0]][1] for f in fs], "s-",
 ax[1, 2].set_xlabel("f D / u_cm")
 ax[1, 2].legend(fontsize=8)
 ax[1, 2].grid(True, alpha=0.3)
+# inside the fourth contact at f = 0.3: the same run, rows every 0.2 us
+# around it only
+start, end = runs[0.3][1][3, 1:3]
+inside = (RiserCase(root, scratch, "fig13_contact").riser(A=1.0, f=0.3)
+          .run_for(end + 0.5 * (end - start), 2e-7).releases([(0.2, 0.2)])
+          .engine_settings("writeFrom %r;" % (start - 0.5 * (end - start))).engine().table()[0])
+tau = (inside["t"] - start) / (end - start)
+for a, key, scale, label in zip(ax[2], ("deltaN", "deltaT", "Uz"), (0.01, 0.01, UCM),
+                                ("delta_n / d", "|delta_t| / d", "v_pz / u_cm")):
+    a.plot(tau, inside[key] / scale)
+    a.set_xlabel("(t - contact start) / contact duration (%.1f us)" % (1e6 * (end - start)))
+    a.set_ylabel(label)
+    a.set_title("inside the fourth contact, f = 0.3", fontsize=9)
+    a.grid(True, alpha=0.3)
 fig.suptitle("riser frequency, A = 1 (riserParticle, %g D/u_cm)" % (duration * UCM / D))
 save(fig, "paper_fig08_13_frequency.png")
 

@@ -101,12 +101,27 @@ if check:
     print("%d claims checked, %d differ%s" % (len(rows), len(failed),
                                             (": " + "; ".join(failed)) if failed else ""))
     sys.exit(1 if failed else 0)
+budget_rows = ["| scene | force | RMS / W | max / W | dropped: lifting distance | dropped: trajectory | "
+               "dropped: CPU | needed |", "|---|---|---|---|---|---|---|---|"]
+budgets = os.path.join(results, "budgets.json")
+for scene in json.load(open(budgets)) if os.path.exists(budgets) else []:
+    for force, v in scene["forces"].items():
+        dropped = v["liftChange"] is not None
+        budget_rows.append("| %s (%.0f D/u_cm, lift %.1f D) | %s | %.3g | %.3g | %s | %s | %s | %s |" % (
+            scene["scene"], scene["duration"], scene["lift"], force, v["rms"], v["max"],
+            "%+.2f D (%+.1f %%)" % (v["liftChange"], 100 * v["liftChange"] / scene["lift"]) if dropped else "-",
+            "%.3g D" % v["trajectoryChange"] if dropped else "-",
+            "x %.2f" % v["cpu"] if dropped else "-",
+            ("yes" if v["needed"] else "no") if dropped else "always"))
 readme = os.path.join(here, "../README.md")
 text_ = open(readme).read()
 begin, end = "<!-- claims table: begin (validation/paper/report.py) -->", "<!-- claims table: end -->"
-if begin not in text_:
-    sys.exit("report.py: no claims markers in " + readme)
-head, rest = text_.split(begin)
-tail = rest.split(end)[1]
-open(readme, "w").write(head + begin + "\n" + "\n".join(table) + "\n" + end + tail)
+for (begin, end), lines in (((begin, end), table),
+                            (("<!-- budget table: begin (validation/paper/report.py) -->",
+                              "<!-- budget table: end -->"), budget_rows)):
+    if begin not in text_:
+        sys.exit("report.py: no '%s' in %s" % (begin, readme))
+    head, rest = text_.split(begin)
+    text_ = head + begin + "\n" + "\n".join(lines) + "\n" + end + rest.split(end)[1]
+open(readme, "w").write(text_)
 print("rewrote the claims table in", readme)

@@ -19,6 +19,9 @@ Description
 
     Integrator (system/riserParticleDict, optional; -integrator overrides):
     \verbatim
+    writeFrom       0.46;           // [s] rows from this time on (default:
+                                    // all; with a fine deltaT, the inside of
+                                    // a contact)
     integrator      adaptive;       // adaptive | paper
     adaptiveCoeffs
     {
@@ -95,6 +98,8 @@ struct integratorChoice
     word name;
     std::unique_ptr<riser::AdaptiveScheme> adaptive;
     std::unique_ptr<riser::PaperScheme> paper;
+    //- The table's rows start here (a fine deltaT over a short window)
+    scalar writeFrom = -GREAT;
 
     riser::IntegratorStats run
     (
@@ -123,6 +128,10 @@ integratorChoice readIntegrator(const Time& runTime, const argList& args, const 
         dict = IOdictionary(io);
     }
     integratorChoice c;
+    if (dict.found("writeFrom"))
+    {
+        c.writeFrom = checkedEntry::nonNegative(dict, "writeFrom");
+    }
     c.name = args.getOrDefault<word>
     (
         "integrator", dict.lookupOrDefault<word>("integrator", "adaptive")
@@ -252,7 +261,10 @@ void runCase(const Time& runTime, const riserScene& scene, const integratorChoic
             {
                 outside = true;
             }
-            writeRow(table, scene, law, i, r.x0.z(), t, s);
+            if (t >= integ.writeFrom)
+            {
+                writeRow(table, scene, law, i, r.x0.z(), t, s);
+            }
             writing += std::chrono::duration<double>
                 (std::chrono::steady_clock::now() - start).count();
         };

@@ -439,7 +439,9 @@ public:
 
         bool inContact = law.hasContact() && law.overlap(s.x, t) > 0.0;
         ContactRecord rec;
-        double h = std::min(hMax_, 1e-3*outputInterval + 1e-12);
+        // the first step from the scene's scales, not the output interval
+        // (the trajectory must not depend on how often rows are written)
+        double h = std::min(hMax_, 1e-3*L/V);
         const double contactScale = 1e-7*law.diameter();   // overlap resolution of events
         bool justRejected = false;
 
@@ -513,7 +515,8 @@ public:
             while (obs.row && nextRow < t + hTry - 1e-12*std::max(1.0, std::abs(nextRow)))
             {
                 ParticleState p = detail::unpack(step.at((nextRow - t)/hTry));
-                if (!inContact) p.spring.setZero();
+                // the spring as the law holds it (capped), zero outside
+                p.spring = inContact ? law.cappedSpring(nextRow, p) : Vector::Zero();
                 obs.row(nextRow, p);
                 nextRow = t0 + (++row)*outputInterval;
             }
