@@ -118,16 +118,32 @@ class RiserCase:
             HEADER % "riserParticleDict" + text + "\n")
         return self
 
-    def _run(self, command, log):
+    def _run(self, command, log, may_fail=False):
+        """the command's log; None if it failed and may_fail"""
         with open(os.path.join(self.path, log), "w") as out:
             done = subprocess.run(command, cwd=self.path, stdout=out, stderr=subprocess.STDOUT)
+        text = open(os.path.join(self.path, log)).read()
         if done.returncode != 0:
+            if may_fail:
+                return None
             sys.exit("riserCase: %s failed in %s (see %s)" % (command[0], self.path, log))
+        return text
 
     def engine(self, *args):
         """run riserParticle; returns self"""
         self._run(["riserParticle", "-case", self.path] + list(args), "log.riserParticle")
         return self
+
+    def engine_log(self, *args, may_fail=False):
+        """run riserParticle; its log, or None if a particle's integration
+        failed (a step too large) and may_fail"""
+        log = self._run(["riserParticle", "-case", self.path] + list(args), "log.riserParticle",
+                        may_fail=True)
+        if log is None:
+            text = open(os.path.join(self.path, "log.riserParticle")).read()
+            if not (may_fail and "failed: " in text):
+                sys.exit("riserCase: riserParticle failed in %s:\n%s" % (self.path, text[-2000:]))
+        return log
 
     def solver(self, cells=12, length=2.0):
         """mesh (O-grid, cyclic ends, length [D]) and run riserParcelFoam"""

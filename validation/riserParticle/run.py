@@ -7,7 +7,6 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import os
 import re
 import shutil
-import subprocess
 import sys
 import time
 
@@ -17,43 +16,17 @@ import matplotlib.pyplot as plt
 import numpy as np
 
 root, scratch, results, figures = sys.argv[1:5]
-D, UCM = 0.1, 1.0                     # the scene's units: D, u_cm, D/u_cm
-tutorial = os.path.join(root, "tutorials/riser/oscillatingNoContact")
-HEADER = "FoamFile { version 2.0; format ascii; class dictionary; object %s; }\n"
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../common"))
+from riserCase import D, HEADER, UCM, RiserCase  # noqa: E402
 
 
 def make_case(name, A=None, f=None, endTime=None, deltaT=None):
-    case = os.path.join(scratch, name)
-    shutil.rmtree(case, ignore_errors=True)
-    os.makedirs(case)
-    for sub in ("0", "constant", "system"):
-        shutil.copytree(os.path.join(tutorial, sub), os.path.join(case, sub))
-    props = os.path.join(case, "constant/riserProperties")
-    text = open(props).read()
-    if A is not None:
-        text = re.sub(r"\nA .*;", "\nA           [0 1 0 0 0 0 0] %r;" % A, text)
-    if f is not None:
-        text = re.sub(r"\nf .*;", "\nf           [0 0 -1 0 0 0 0] %r;" % f, text)
-    open(props, "w").write(text)
-    cd = os.path.join(case, "system/controlDict")
-    text = open(cd).read()
+    """the f = 0.05 tutorial's case with A [m], f [Hz], endTime and deltaT [s]"""
+    case = RiserCase(root, scratch, name).riser(A=None if A is None else A / D,
+                                                f=None if f is None else f * D / UCM)
     if endTime is not None:
-        text = re.sub(r"\nendTime .*;", "\nendTime         %r;" % endTime, text)
-    if deltaT is not None:      # the table's row interval
-        text = re.sub(r"\ndeltaT .*;", "\ndeltaT          %r;" % deltaT, text)
-    open(cd, "w").write(text)
+        case.run_for(endTime, deltaT)
     return case
-
-
-def riser_particle(case, *args, may_fail=False):
-    """The run's log; None if the integration failed and may_fail is set"""
-    out = subprocess.run(["riserParticle", "-case", case] + list(args),
-                         capture_output=True, text=True)
-    if out.returncode != 0:
-        if may_fail and "failed: " in out.stderr + out.stdout:
-            return None
-        sys.exit("riserParticle failed in %s:\n%s" % (case, out.stdout[-2000:] + out.stderr[-2000:]))
-    return out.stdout
 
 
 # --- regime map -------------------------------------------------------------
@@ -61,14 +34,14 @@ nA = nF = 40
 As = np.linspace(0.25, 2.0, nA) * D
 fs = np.linspace(0.025, 0.4, nF) * UCM / D
 case = make_case("regimeMap")
-open(os.path.join(case, "system/riserSweepDict"), "w").write(
+open(os.path.join(case.path, "system/riserSweepDict"), "w").write(
     HEADER % "riserSweepDict"
     + "A (%s);\nf (%s);\nperiods 20;\nliftTime 10;\n"
     % (" ".join("%.6g" % a for a in As), " ".join("%.6g" % f for f in fs)))
 start = time.time()
-log = riser_particle(case, "-sweep")
+case.engine("-sweep")
 wall = time.time() - start
-shutil.copy(os.path.join(case, "postProcessing/riserParticle/sweep.dat"),
+shutil.copy(os.path.join(case.path, "postProcessing/riserParticle/sweep.dat"),
             os.path.join(results, "regimeMap.dat"))
 rows = [l.split() for l in open(os.path.join(results, "regimeMap.dat")) if l[0] != "#"]
 classes = ["noContact", "onceFirstPeriod", "firstPeriodsOnly", "other", "bothWallsEveryPeriod"]
@@ -121,12 +94,12 @@ fig.savefig(os.path.join(figures, "regime_map.png"), dpi=110)
 # --- frequency and amplitude sweeps (the paper's Figs. 8-16) ----------------
 def sweep(name, As, fs):
     case = make_case(name)
-    open(os.path.join(case, "system/riserSweepDict"), "w").write(
+    open(os.path.join(case.path, "system/riserSweepDict"), "w").write(
         HEADER % "riserSweepDict"
         + "A (%s);\nf (%s);\nperiods 20;\nliftTime 10;\n"
         % (" ".join("%.6g" % a for a in As), " ".join("%.6g" % f for f in fs)))
-    riser_particle(case, "-sweep")
-    shutil.copy(os.path.join(case, "postProcessing/riserParticle/sweep.dat"),
+    case.engine("-sweep")
+    shutil.copy(os.path.join(case.path, "postProcessing/riserParticle/sweep.dat"),
                 os.path.join(results, name + ".dat"))
     return [l.split() for l in open(os.path.join(results, name + ".dat")) if l[0] != "#"]
 
@@ -169,16 +142,12 @@ for name, rs in (("frequency sweep (A = D)", freq), ("amplitude sweep", amp)):
 
 # --- work-precision ---------------------------------------------------------
 def table(case):
-    return np.loadtxt(os.path.join(case, "postProcessing/riserParticle/particles.dat"))
+    return np.loadtxt(os.path.join(case.path, "postProcessing/riserParticle/particles.dat"))
 
 
 def cpu_of(log):
     """the integration's own time (the engine times the row writing apart)"""
     return sum(float(m) for m in re.findall(r"\(([0-9.eE+-]+) s integrating", log))
-
-
-def integrator_dict(case, text):
-    open(os.path.join(case, "system/riserParticleDict"), "w").write(HEADER % "riserParticleDict" + text)
 
 
 wp = []
@@ -189,27 +158,26 @@ for scene, f, T in (("f005", 0.5, 4.0), ("f03", 3.0, 5 / 3.0)):
     # the converged reference: without contact, fixed fifth-order steps of
     # 1e-5 s (the paper scheme with no contact to handle; 1e-4 s and 5e-5 s
     # agree with it to 6e-9 D); with contacts, the adaptive scheme at 1e-12
-    integrator_dict(case, "integrator paper; paperCoeffs { flowStep 1e-5; }\n" if f < 1 else
-                    "integrator adaptive; adaptiveCoeffs { tolerance 1e-12; }\n")
-    riser_particle(case)
+    case.engine_settings("integrator paper; paperCoeffs { flowStep 1e-5; }" if f < 1 else
+                         "integrator adaptive; adaptiveCoeffs { tolerance 1e-12; }").engine()
     ref = table(case)
     runs = [("adaptive", "tolerance %g" % tol,
-             "integrator adaptive; adaptiveCoeffs { tolerance %g; }\n" % tol)
+             "integrator adaptive; adaptiveCoeffs { tolerance %g; }" % tol)
             for tol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11)]
     runs += [("paper", "flow step %g s" % h,
-              "integrator paper; paperCoeffs { flowStep %g; }\n" % h)
+              "integrator paper; paperCoeffs { flowStep %g; }" % h)
              for h in (5e-4, 2e-4, 1e-4, 5e-5, 2e-5)]
     for name, label, text in runs:
-        integrator_dict(case, text)
+        case.engine_settings(text)
         # the engine times its own integration; short runs are repeated and
         # the least time kept (a noisy machine only ever adds time)
-        log = riser_particle(case, may_fail=True)
+        log = case.engine_log(may_fail=True)
         if log is None:         # the integration failed: the step is too large
             wp.append((scene, name, label, float("nan"), float("nan"), float("nan")))
             continue
         cpu = cpu_of(log)
         for _ in range(2 if cpu < 0.5 else 0):
-            cpu = min(cpu, cpu_of(riser_particle(case)))
+            cpu = min(cpu, cpu_of(case.engine_log()))
         t = table(case)
         if t.shape != ref.shape:
             sys.exit("rows differ for %s %s" % (name, label))
