@@ -9,6 +9,35 @@
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 template<class ParcelType>
+const Foam::point& Foam::carrierFlow::position(const ParcelType& p) const
+{
+    positionCache& c = lastPosition_;
+    const label timeIndex = mesh_.time().timeIndex();
+    if
+    (
+        c.particle != static_cast<const void*>(&p)
+     || c.timeIndex != timeIndex
+     || c.stepFraction != p.stepFraction()
+     || c.celli != p.cell()
+     || c.tetFacei != p.tetFace()
+     || c.tetPti != p.tetPt()
+     || c.coordinates != p.coordinates()
+    )
+    {
+        c.particle = &p;
+        c.timeIndex = timeIndex;
+        c.stepFraction = p.stepFraction();
+        c.celli = p.cell();
+        c.tetFacei = p.tetFace();
+        c.tetPti = p.tetPt();
+        c.coordinates = p.coordinates();
+        c.position = p.position();
+    }
+    return c.position;
+}
+
+
+template<class ParcelType>
 Foam::vector Foam::carrierFlow::interpolate
 (
     const cachedField& c,
@@ -40,7 +69,7 @@ Foam::vector Foam::carrierFlow::velocity
     (
         riser_->velocity
         (
-            toCore(p.position()),
+            toCore(position(p)),
             particleTime(p.stepFraction())
         )
     );
@@ -58,7 +87,7 @@ Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
     (
         riser_->vorticity
         (
-            toCore(p.position()),
+            toCore(position(p)),
             particleTime(p.stepFraction())
         )
     );
@@ -72,11 +101,13 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
     {
         return interpolate(materialDerivative_, p);
     }
+    // Du/Dt of the riser flow is uniform, (dU_r/dt, 0, 0): no position
+    // (on a moving mesh position() costs two cell-centre evaluations)
     return fromCore
     (
         riser_->materialDerivative
         (
-            toCore(p.position()),
+            toCore(vector::zero),
             particleTime(p.stepFraction())
         )
     );

@@ -56,6 +56,29 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
     const scalar muc
 ) const
 {
+    coefficientCache& c = lastCoefficient_;
+    const label timeIndex = this->mesh().time().timeIndex();
+    if
+    (
+        c.particle == static_cast<const void*>(&p)
+     && c.timeIndex == timeIndex
+     && c.stepFraction == p.stepFraction()
+     && c.celli == p.cell()
+     && c.coordinates == p.coordinates()
+     && c.U == p.U()
+     && c.muc == muc
+    )
+    {
+        return c.KH;
+    }
+    c.particle = &p;
+    c.timeIndex = timeIndex;
+    c.stepFraction = p.stepFraction();
+    c.celli = p.cell();
+    c.coordinates = p.coordinates();
+    c.U = p.U();
+    c.muc = muc;
+
     const scalar d = p.d();
     const scalar rhoc = td.rhoc();
     scalar CH = riser::classicalBassetCoefficient;
@@ -68,7 +91,8 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
             coefficient_, Re, muc, rhoc, 0.5*d, frequency_
         );
     }
-    return CH*0.25*d*d*std::sqrt(constant::mathematical::pi*rhoc*muc);
+    c.KH = CH*0.25*d*d*std::sqrt(constant::mathematical::pi*rhoc*muc);
+    return c.KH;
 }
 
 
