@@ -2,7 +2,12 @@
 self time and inclusive time per function (template arguments folded to
 <>), plus the callers of selected functions.
 
-usage: perfStacks.py <perf script output> [top] [function whose callers to list ...]
+usage: perfStacks.py <perf script output> [top] [--ours] [function whose callers to list ...]
+
+--ours: also the phases of the run (what main calls; inside the cloud's
+evolve, what the time goes to) and the inclusive time of the project's own
+functions (namespace riser::, carrierFlow, the riser submodels, the
+HistoryParcel layer's own work, riserParcelFoam's imposeCarrier).
 
 License: GPL-3.0-or-later
 """
@@ -54,10 +59,74 @@ def read_stacks(path):
         yield stack
 
 
+OURS = ("riser::", "Foam::carrierFlow", "Foam::Riser", "Foam::WallCorrectedDrag",
+        "Foam::ParticleForceFields", "Foam::particleForces", "Foam::riserOscillation",
+        "Foam::HistoryParcel<>::transformProperties", "Foam::HistoryParcel<>::writeFields",
+        "Foam::HistoryParcel<>::readFields")
+
+# inside the cloud's evolve: the first rule whose function is on the stack
+EVOLVE_RULES = [
+    ("Foam::KinematicParcel<>::trackingData::trackingData<>",
+     "interpolation set-up: cellPoint point field of U (volPointInterpolation)"),
+    ("Foam::RiserWallContact<>", "wall contact (riserWallContact)"),
+    ("Foam::CloudFunctionObjectList<>", "cloud functions (riserParticleTable, particleForceFields)"),
+    ("Foam::ParticleForceList<>", "particle forces"),
+    ("Foam::Cloud<>::move<>", "tracking and the stock parcel (move, calc)"),
+    ("Foam::KinematicCloud<>::postEvolve", "post-evolve (cloud functions' output)"),
+    ("Foam::CollidingCloud<>::info", "cloud statistics written to the log each step (info)"),
+    ("Foam::KinematicCloud<>::preEvolve", "pre-evolve (log, forces' cacheFields)"),
+    ("Foam::InjectionModelList<>", "injection"),
+]
+
+
+def ours(name):
+    return name.startswith(OURS)
+
+
+def phases(stacks, total):
+    main_callee = collections.Counter()
+    evolve = collections.Counter()
+    our_incl = collections.Counter()
+    for stack in stacks:
+        names = [f for f, _, _ in stack]
+        if "main" in names:
+            i = names.index("main")
+            callee = names[i - 1] if i > 0 else "main (self)"
+            if callee == "operator()" or callee.startswith("riser::"):
+                callee = "imposeCarrier (the analytic carrier on every cell and face)"
+            main_callee[callee] += 1
+            if callee == "Foam::CollidingCloud<>::evolve":
+                for fn, label in EVOLVE_RULES:
+                    if fn in names:
+                        evolve[label] += 1
+                        break
+                else:
+                    evolve["other"] += 1
+        seen = set()
+        for f in names:
+            if ours(f) and f not in seen:
+                our_incl[f] += 1
+                seen.add(f)
+        if "main" in names and main_callee and names.index("main") > 0 \
+           and (names[names.index("main") - 1] == "operator()"
+                or names[names.index("main") - 1].startswith("riser::")):
+            our_incl["imposeCarrier (riserParcelFoam main)"] += 1
+    print("\nphases: what main calls (inclusive)")
+    for f, c in main_callee.most_common(12):
+        print("%6.2f%%  %s" % (100.0 * c / total, f))
+    print("\ninside Foam::CollidingCloud<>::evolve (first match on the stack)")
+    for f, c in evolve.most_common():
+        print("%6.2f%%  %s" % (100.0 * c / total, f))
+    print("\nthe project's own functions (inclusive, with what they call)")
+    for f, c in our_incl.most_common(15):
+        print("%6.2f%%  %s" % (100.0 * c / total, f))
+
+
 def main():
     path = sys.argv[1]
     top = int(sys.argv[2]) if len(sys.argv) > 2 else 25
-    targets = sys.argv[3:]
+    want_ours = "--ours" in sys.argv[3:]
+    targets = [t for t in sys.argv[3:] if t != "--ours"]
     self_count = collections.Counter()
     incl_count = collections.Counter()
     callers = {t: collections.Counter() for t in targets}
@@ -86,6 +155,8 @@ def main():
     print("\ninclusive time (top %d)" % top)
     for f, c in incl_count.most_common(top):
         print("%6.2f%%  %s" % (100.0 * c / total, f))
+    if want_ours:
+        phases(read_stacks(path), total)
     for t in targets:
         n = sum(callers[t].values())
         print("\ncallers of %s (%.2f%% of all samples)" % (t, 100.0 * n / max(total, 1)))

@@ -149,9 +149,10 @@ def positions(n, seed=1912, margin=0.005, length=0.5):
     return out
 
 
-def write_positions(case, n, length):
+def write_positions(case, n, length, extra=()):
     lines = [header("vectorField", "kinematicCloudPositions"), "("]
     lines += ["(%.12g %.12g %.12g)" % p for p in positions(n, length=length)]
+    lines += ["(%.12g %.12g %.12g)" % p for p in extra]
     lines.append(")")
     with open(os.path.join(case, "constant", "kinematicCloudPositions"), "w") as f:
         f.write("\n".join(lines) + "\n")
@@ -185,6 +186,38 @@ RISER_BASSET = """        riserBasset
 """
 
 STOCK_COLLISION = "    collisionModel  none;\n"
+
+# stock particle-particle and particle-wall contact (the hopper tutorial's
+# models, constants of the ore and the steel wall)
+STOCK_PAIR_COLLISION = """    collisionModel  pairCollision;
+    pairCollisionCoeffs
+    {
+        maxInteractionDistance  0.01;
+        writeReferredParticleCloud no;
+        pairModel pairSpringSliderDashpot;
+        pairSpringSliderDashpotCoeffs
+        {
+            useEquivalentSize   no;
+            alpha               0.12;
+            b                   1.5;
+            mu                  0.2;
+            cohesionEnergyDensity 0;
+            collisionResolutionSteps 12;
+        }
+        wallModel    wallSpringSliderDashpot;
+        wallSpringSliderDashpotCoeffs
+        {
+            useEquivalentSize   no;
+            collisionResolutionSteps 12;
+            youngsModulus   2e11;
+            poissonsRatio   0.3;
+            alpha           0.12;
+            b               1.5;
+            mu              0.2;
+            cohesionEnergyDensity 0;
+        }
+    }
+"""
 
 RISER_COLLISION = """    collisionModel  riserWallContact;
     riserWallContactCoeffs
@@ -304,6 +337,9 @@ interpolationSchemes { default linear; }
 class Variant:
     """One solver with one set of models, in one frame.
 
+    collision: None (riserWallContact for ours, none for stock) or "pair"
+               (stock pairCollision: particle-particle and wall contact)
+
     solver:  'stock' or 'riser'
     frame:   'lab' (moving mesh) or 'riser' (static mesh)
     forces:  'drag' (stock sphereDrag + gravity), 'dragCarrier' (plus the
@@ -311,9 +347,10 @@ class Variant:
              riser forces without Basset), 'paperBasset' (with riserBasset)
     """
 
-    def __init__(self, key, solver, frame, forces, label):
+    def __init__(self, key, solver, frame, forces, label, collision=None):
         self.key, self.solver, self.frame, self.forces = key, solver, frame, forces
         self.label = label
+        self.collision = collision      # None: the solver's default; "pair": stock pairCollision
 
     @property
     def application(self):
@@ -330,6 +367,8 @@ class Variant:
             "paperBasset": RISER_FORCES + RISER_BASSET,
         }[self.forces]
         collision = RISER_COLLISION if self.solver == "riser" else STOCK_COLLISION
+        if self.collision == "pair":
+            collision = STOCK_PAIR_COLLISION
         return header("dictionary", "kinematicCloudProperties") + "\n" + CLOUD % {
             "rho": PARTICLE_RHO, "d": PARTICLE_D, "forces": forces,
             "collision": collision,
@@ -339,8 +378,9 @@ class Variant:
         }
 
 
-def make_case(case, variant, mesh, n, steps, dt, length, write_at_end=False):
-    """A case directory for variant with n particles and steps steps of dt."""
+def make_case(case, variant, mesh, n, steps, dt, length, write_at_end=False, extra=()):
+    """A case directory for variant with n particles (and the positions
+    extra besides) and steps steps of dt."""
     if os.path.isdir(case):
         shutil.rmtree(case)
     os.makedirs(os.path.join(case, "constant"))
@@ -348,7 +388,7 @@ def make_case(case, variant, mesh, n, steps, dt, length, write_at_end=False):
                     os.path.join(case, "constant", "polyMesh"))
     write_system(case, variant.application, steps, dt, write_at_end)
     write_U(case, mesh, variant.frame)
-    write_positions(case, n, length)
+    write_positions(case, n, length, extra)
     c = os.path.join(case, "constant")
     with open(os.path.join(c, "kinematicCloudProperties"), "w") as f:
         f.write(variant.cloud_properties())
