@@ -39,6 +39,7 @@ License: GPL-3.0-or-later
 """
 import argparse
 import datetime
+import fcntl
 import glob
 import hashlib
 import json
@@ -62,6 +63,9 @@ MESH_N, MESH_NZ = 12, 44    # riserMesh -n 12 -nz 44: 21,120 cells
 
 
 # ------------------------------------------------------------------ running
+
+F_SETPIPE_SZ = 1031     # fcntl.h (Linux)
+
 
 class ProcessClock:
     """CPU time [s] used by a process's threads and its peak resident
@@ -171,6 +175,13 @@ def run_solver(case, application, np=1, env=None):
     with open(log, "wb") as out:
         proc = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
                                 bufsize=1 << 16, env=env)
+        # the smallest pipe (one page): a solver faster than this reader
+        # blocks (asleep, using no CPU time) after a few steps' output, so
+        # that the CPU time read at an ExecutionTime line is that step's
+        try:
+            fcntl.fcntl(proc.stdout.fileno(), F_SETPIPE_SZ, 4096)
+        except OSError:
+            pass
         if np == 1:
             clocks = [ProcessClock(proc.pid)]
         for line in proc.stdout:

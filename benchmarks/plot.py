@@ -28,8 +28,11 @@ def ms(x):
 
 def when(suite):
     """The suite's start, when recorded."""
-    return " (measured %s, load average %s)" % (suite["date"], " ".join(suite.get("loadAverage", []))) \
-        if suite.get("date") else ""
+    if not suite.get("date"):
+        return ""
+    if suite.get("loadAverage"):
+        return " (measured %s, load average %s)" % (suite["date"], " ".join(suite["loadAverage"]))
+    return " (measured %s)" % suite["date"]
 
 
 def verdict(ok):
@@ -176,7 +179,8 @@ def summary(res, a):
                 lines.append("| %d | %s | %s | %s | %.1f | %s |" % (
                     n, ms(r["t"][i]), us(r["perParticleStep"][i]) if r["perParticleStep"][i] else "",
                     us(marg) if marg else "", r["rss"][i] / 1024.0,
-                    "%.0f" % r["bytesPerParticle"][str(n)] if str(n) in r["bytesPerParticle"] else ""))
+                    ("%.0f" % r["bytesPerParticle"][str(n)] if r["bytesPerParticle"][str(n)] > 0
+                     else "~0 (below the noise)") if str(n) in r["bytesPerParticle"] else ""))
                 prev = n
             if r["linear"] is not None:
                 lines.append("")
@@ -196,9 +200,12 @@ def summary(res, a):
         p = a["processors"]
         c = p["comparison"]
         lines += ["## 4. Scaling with processors (riser frame, full physics)", "",
-                  "%d steps, %d repeats%s." % (res["suites"]["processors"]["steps"],
+                  "%d steps, %d repeats%s.%s" % (res["suites"]["processors"]["steps"],
                                              res["suites"]["processors"]["repeats"],
-                                             when(res["suites"]["processors"])), "",
+                                             when(res["suites"]["processors"]),
+                                             " " + res["suites"]["processors"]["note"][0].upper()
+                                             + res["suites"]["processors"]["note"][1:] + "."
+                                             if res["suites"]["processors"].get("note") else ""), "",
                   "| N | np 1 ms/step (wall) | np 2 ms/step (wall) | speedup (repeats) | target | |",
                   "|---:|---:|---:|---:|---:|---|",
                   "| %d | %s | %s | %.2f (%s) | >= %.1f | %s |" % (
@@ -247,11 +254,33 @@ def summary(res, a):
             if k in v:
                 lines.append("| %s | %.3f |" % (v[k]["label"], v[k]["cpuPerStep"]))
         lines.append("")
-    if "proposedFix" in extra:
-        lines += ["## The proposed changes (private build, outside the tree)", "",
-                  "The same suites with a private build of the library and solver carrying the "
-                  "changes proposed in benchmarks/profile.txt: see "
-                  "[proposed-fix/summary.md](proposed-fix/summary.md).", ""]
+    if "beforeFix" in extra:
+        b = extra["beforeFix"]
+        ab = analyse(b)
+        lines += ["## Before and after the profile's fix", "",
+                  "The tree's build measured above includes the four changes proposed in "
+                  "`benchmarks/profile.txt` (commit ec4f1d0, applied to the tree at 23:09 UTC). "
+                  "The same suites with a private build of the sources as they "
+                  "were before (%s; [before-fix/summary.md](before-fix/summary.md)):" % b["machine"]["date"], "",
+                  "| suite | solver and models | t(1) ms/step before | after | ratio to stock before | after | target |",
+                  "|---|---|---:|---:|---:|---:|---:|"]
+        for suite in ("stock", "riserFrame"):
+            if suite in a and suite in ab:
+                after = {r["key"]: r for r in a[suite]}
+                for r in ab[suite]:
+                    if not r["key"].startswith("riser") or r["key"] not in after:
+                        continue
+                    q = after[r["key"]]
+                    lines.append("| %s | %s | %s | %s | %.2f | %.2f | %s |" % (
+                        "moving mesh" if suite == "stock" else "static mesh", r["label"],
+                        ms(r["t1"]), ms(q["t1"]), r["ratio"], q["ratio"],
+                        "<= %.1f" % q["target"] if q.get("target") else ""))
+        if "contact" in b["suites"] and "contact" in res["suites"]:
+            lines.append("| static mesh | 1 particle at the wall: step cost ratio | | | %.0fx | %.0fx | |" % (
+                b["suites"]["contact"]["ratio"], res["suites"]["contact"]["ratio"]))
+        lines.append("")
+    if res.get("note"):
+        lines += ["Note: %s." % res["note"], ""]
     lines.append("Benchmark run time: %.0f s." % res.get("elapsed_s", 0))
     return "\n".join(lines) + "\n"
 
@@ -407,7 +436,7 @@ def main():
     res = json.load(open(os.path.join(folder, "results.json")))
     # measurements made separately, in sub-folders of the results
     res["extra"] = {}
-    for name, sub in (("pairCollision", "pairCollision"), ("proposedFix", "proposed-fix")):
+    for name, sub in (("pairCollision", "pairCollision"), ("beforeFix", "before-fix")):
         path = os.path.join(folder, sub, "results.json")
         if os.path.isfile(path) and os.path.abspath(folder) != os.path.abspath(os.path.dirname(path)):
             res["extra"][name] = json.load(open(path))
