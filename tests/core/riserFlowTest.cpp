@@ -53,17 +53,17 @@ TEST(RiserFlow, RiserKinematics)
 {
     for (double t : {0.0, 0.05, 0.13})
     {
-        const double v = (flow.axisPosition(t + h) - flow.axisPosition(t - h))/(2.0*h);
-        const double a = (flow.riserVelocity(t + h) - flow.riserVelocity(t - h))/(2.0*h);
-        EXPECT_NEAR(flow.riserVelocity(t), v, tol);
-        EXPECT_NEAR(flow.riserAcceleration(t), a, tol*100.0);
+        const double v = (flow.motion().axisPosition(t + h) - flow.motion().axisPosition(t - h))/(2.0*h);
+        const double a = (flow.motion().riserVelocity(t + h) - flow.motion().riserVelocity(t - h))/(2.0*h);
+        EXPECT_NEAR(flow.motion().riserVelocity(t), v, tol);
+        EXPECT_NEAR(flow.motion().riserAcceleration(t), a, tol*100.0);
     }
-    EXPECT_NEAR(flow.axisPosition(0.0), 0.1*std::sin(0.4), 1e-15);
+    EXPECT_NEAR(flow.motion().axisPosition(0.0), 0.1*std::sin(0.4), 1e-15);
     // Poiseuille profile: u_cm on the axis, zero on the wall, riser speed sideways
     const double t = 0.1;
-    EXPECT_NEAR(flow.velocity(Vector(flow.axisPosition(t), 0, 2), t).z(), 1.0, 1e-15);
-    EXPECT_NEAR(flow.velocity(Vector(flow.axisPosition(t) + 0.05, 0, 2), t).z(), 0.0, 1e-15);
-    EXPECT_NEAR(flow.velocity(Vector(0, 0.05, 2), t).x(), flow.riserVelocity(t), 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(flow.motion().axisPosition(t), 0, 2), t).z(), 1.0, 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(flow.motion().axisPosition(t) + 0.05, 0, 2), t).z(), 0.0, 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(0, 0.05, 2), t).x(), flow.motion().riserVelocity(t), 1e-15);
 }
 
 TEST(RiserFlow, RejectsBadArguments)

@@ -12,7 +12,7 @@ using namespace riser;
 
 namespace {
 
-// The riser scene's materials (MODEL.md section 3)
+// The riser scene's materials (doc/theory.md section 3)
 HertzMindlinParameters sceneContact(double en, double friction)
 {
     return HertzMindlinParameters{
@@ -24,8 +24,7 @@ HertzMindlinParameters sceneContact(double en, double friction)
 // the wall of a riser at rest (D = 0.1 m), released 1 mm from the wall.
 RiserParticleLaw dryLaw(double en, double friction)
 {
-    ForceSelection none;
-    none.drag = none.lift = none.addedMass = none.fluidStress = none.gravity = false;
+    ForceSelection none = ForceSelection::none();
     return RiserParticleLaw(RiserFlow(0.1, 1.0, 0.0, 0.0, 0.0), 0.01, 2000.0, 1000.0, 1e-3,
                             Vector(0, 0, -9.8), none, sceneContact(en, friction));
 }
@@ -105,7 +104,7 @@ TEST(RiserIntegrators, ElasticContactConservesEnergy)
     EXPECT_GT(paperGain, 1.0);      // the failure the charts show
 }
 
-// The f = 0.05 scene of the paper (A = 1, no contact; MODEL.md section 2,
+// The f = 0.05 scene of the paper (A = 1, no contact; doc/theory.md section 2,
 // 0.1 m at 0.5 Hz, the base-case particle released at x = y = 0.2 D with
 // the riser's lateral velocity and the local carrier speed): the paper's
 // scheme (flow step 1e-4 s) and the adaptive one (tolerance 1e-9) agree on
@@ -121,9 +120,9 @@ TEST(RiserIntegrators, IntegratorsAgreeWithoutContact)
                                ForceSelection{}, contact);
     ParticleState s;
     s.x = Vector(0.02, 0.02, 0.0);
-    const double R = 0.05, r2 = (s.x.x() - riser.axisPosition(0.0))*(s.x.x() - riser.axisPosition(0.0))
+    const double R = 0.05, r2 = (s.x.x() - riser.motion().axisPosition(0.0))*(s.x.x() - riser.motion().axisPosition(0.0))
                                 + s.x.y()*s.x.y();
-    s.v = Vector(riser.riserVelocity(0.0), 0.0, 1.0*(1.0 - r2/(R*R)));
+    s.v = Vector(riser.motion().riserVelocity(0.0), 0.0, 1.0*(1.0 - r2/(R*R)));
     std::vector<Vector> a, p;
     Observer oa, op;
     oa.row = [&](double, const ParticleState& q) { a.push_back(q.x); };

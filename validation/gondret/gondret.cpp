@@ -1,6 +1,6 @@
 // Gondret, Lance & Petit (2002), St = 152: a steel sphere falls from rest in
 // silicone oil and bounces on a flat horizontal wall. The sphere is the
-// model of MODEL.md section 1 in a quiescent fluid, vertical motion only:
+// model of doc/theory.md section 1 in a quiescent fluid, vertical motion only:
 //
 //   (m_p + C_A m_f) dv/dt = -c(Re) v - (m_p - m_f) g + F_H + F_C,   dz/dt = v
 //
@@ -37,7 +37,7 @@
 //       and hard metals e_dry = 0.97 is a typical value", citing Foerster et
 //       al. 1994, Joseph et al. 2001, Gondret et al. 2002)
 //   wall: glass (assumed; E = 63 GPa, nu = 0.23, typical soda-lime values),
-//       sphere: steel (E = 200 GPa, nu = 0.3, as MODEL.md's steel). The
+//       sphere: steel (E = 200 GPa, nu = 0.3, as the steel of doc/theory.md section 3). The
 //       elastic constants set the contact time (~15 us) only, not e.
 //   experiment: the digitized gap h(t) given as the first argument.
 //

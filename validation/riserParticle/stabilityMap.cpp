@@ -10,7 +10,7 @@
 //    at its default tolerance. tau_p = (m_p + m_A)/c, c the drag factor
 //    F_D = c w at the particle's terminal slip (Stokes for small d).
 // 2. contact steps against the Hertz contact time: a dry normal impact
-//    (10 mm ore sphere on the steel wall, MODEL.md section 3) at 1 m/s with
+//    (10 mm ore sphere on the steel wall, doc/theory.md section 3) at 1 m/s with
 //    e_n = 0.76 and 1, the paper's RK4 contact step h_c = 1e-3 .. 1 t_c,
 //    t_c measured by the adaptive scheme at tolerance 1e-10; the measured
 //    restitution's error and, at e_n = 1, the energy change per contact;
@@ -148,8 +148,7 @@ int main(int argc, char** argv)
 
     // 2. contact steps against the Hertz contact time
     {
-        ForceSelection none;
-        none.drag = none.lift = none.addedMass = none.fluidStress = none.gravity = false;
+        ForceSelection none = ForceSelection::none();
         const RiserFlow still(D, 1.0, 0.0, 0.0, 0.0);
         const double d = 0.01, v0 = 1.0;
         ParticleState s;
@@ -192,8 +191,7 @@ int main(int argc, char** argv)
 
     // 3. where the paper scheme's contact starts, against the flow step
     {
-        ForceSelection none;
-        none.drag = none.lift = none.addedMass = none.fluidStress = none.gravity = false;
+        ForceSelection none = ForceSelection::none();
         const RiserFlow still(D, 1.0, 0.0, 0.0, 0.0);
         const double d = 0.01, v0 = 1.0;
         const RiserParticleLaw law(still, d, rhoP, rhoF, mu, g, none, sceneContact(1.0));

@@ -62,9 +62,10 @@ int main(int argc, char *argv[])
 
     carrierFlow carrier(mesh, true);
     const riser::RiserFlow& flow = carrier.riser();
+    const riser::RiserMotion& motion = flow.motion();
     const scalar R = flow.radius();
     const scalar period =
-        flow.omega() > 0 ? constant::mathematical::twoPi/flow.omega() : 1;
+        motion.omega() > 0 ? constant::mathematical::twoPi/motion.omega() : 1;
 
     const scalar t = args.getOrDefault<scalar>("time", 0.875*period);
     const scalar dt = args.getOrDefault<scalar>("deltaT", 1e-5);
@@ -80,7 +81,7 @@ int main(int argc, char *argv[])
     // The mesh is centred on the axis at t - dt: mesh coordinates are lab
     // coordinates shifted by x_c(t - dt) (a constant shift changes nothing),
     // so that only the step's own small translation moves the mesh.
-    const scalar shift = flow.axisPosition(t - dt);
+    const scalar shift = motion.axisPosition(t - dt);
     auto lab = [shift](const point& x)
     {
         return toCore(x + vector(shift, 0, 0));
@@ -118,7 +119,7 @@ int main(int argc, char *argv[])
     imposeFlow(t - dt);
     U.oldTime();
     runTime.setTime(t, 2);
-    mesh.movePoints(points0 + vector(flow.axisPosition(t) - shift, 0, 0));
+    mesh.movePoints(points0 + vector(motion.axisPosition(t) - shift, 0, 0));
     imposeFlow(t);
 
     dictionary schemes;
@@ -129,7 +130,7 @@ int main(int argc, char *argv[])
 
     const scalar uScale = max(flow.centreLineSpeed(), SMALL);
     const scalar curlScale = 2*uScale/R;
-    const scalar aScale = max(flow.amplitude()*sqr(flow.omega()), SMALL);
+    const scalar aScale = max(motion.amplitude()*sqr(motion.omega()), SMALL);
     const boundBox bb(mesh.points());
 
     Random rnd(1234);
@@ -142,7 +143,7 @@ int main(int argc, char *argv[])
         const scalar z = bb.min().z() + bb.span().z()*(0.1 + 0.8*rnd.sample01<scalar>());
         const point x
         (
-            flow.axisPosition(t) - shift + r*Foam::cos(theta), r*Foam::sin(theta), z
+            motion.axisPosition(t) - shift + r*Foam::cos(theta), r*Foam::sin(theta), z
         );
         const label celli = mesh.findCell(x);
         if (celli < 0) continue;

@@ -18,7 +18,7 @@
 #ifndef RISERCORE_BASSET_BASSETCOEFFICIENT_HPP
 #define RISERCORE_BASSET_BASSETCOEFFICIENT_HPP
 
-#include "../checks.hpp"
+#include "checks.hpp"
 
 #include <cmath>
 

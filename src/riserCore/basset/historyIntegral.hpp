@@ -51,7 +51,7 @@
 #ifndef RISERCORE_BASSET_HISTORYINTEGRAL_HPP
 #define RISERCORE_BASSET_HISTORYINTEGRAL_HPP
 
-#include "../checks.hpp"
+#include "checks.hpp"
 
 #include <Eigen/Dense>
 

@@ -35,9 +35,9 @@
 #ifndef RISERCORE_CONTACT_HERTZMINDLIN_HPP
 #define RISERCORE_CONTACT_HERTZMINDLIN_HPP
 
-#include "restitution.hpp"
+#include "contact/restitution.hpp"
 
-#include "../vector.hpp"
+#include "vector.hpp"
 
 #include <cmath>
 

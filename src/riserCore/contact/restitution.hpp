@@ -28,7 +28,7 @@
 #ifndef RISERCORE_CONTACT_RESTITUTION_HPP
 #define RISERCORE_CONTACT_RESTITUTION_HPP
 
-#include "../checks.hpp"
+#include "checks.hpp"
 
 #include <algorithm>
 #include <cmath>

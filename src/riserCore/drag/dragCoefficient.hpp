@@ -32,7 +32,8 @@
 #ifndef RISERCORE_DRAG_DRAGCOEFFICIENT_HPP
 #define RISERCORE_DRAG_DRAGCOEFFICIENT_HPP
 
-#include "../checks.hpp"
+#include "checks.hpp"
+#include "vector.hpp"
 
 #include <cmath>
 
@@ -91,11 +92,26 @@ inline double dragCoefficientTimesRe(DragLaw law, double Re, const WallFactors& 
     return dragCoefficient(law, Re, w)*Re;
 }
 
+//- The particle Reynolds number Re_p = rho |w| d / mu for slip speed |w|
+inline double particleReynolds(double rho, double slip, double d, double mu)
+{
+    return rho*slip*d/mu;
+}
+
 //- The drag force's factor: F_D = (pi/8) d^2 rho C_D |w| w = c w with
-//  c = (pi d mu / 8) C_D Re_p, Re_p = rho d |w| / mu.
+//  c = (pi d mu / 8) C_D Re_p, Re_p = rho d |w| / mu. A semi-implicit
+//  integration (OpenFOAM's particle forces) uses c itself.
 inline double dragFactor(DragLaw law, const WallFactors& w, double d, double mu, double Re)
 {
     return M_PI*d*mu/8.0*dragCoefficientTimesRe(law, Re, w);
+}
+
+//- The drag force F_D = c w on a sphere of diameter d with slip
+//  w = u - v in a fluid of density rho and viscosity mu
+inline Vector dragForce(DragLaw law, const WallFactors& factors, double d, double rho,
+                        double mu, const Vector& w)
+{
+    return dragFactor(law, factors, d, mu, particleReynolds(rho, w.norm(), d, mu))*w;
 }
 
 } // namespace riser

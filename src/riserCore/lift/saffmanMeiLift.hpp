@@ -15,7 +15,8 @@
 #ifndef RISERCORE_LIFT_SAFFMANMEILIFT_HPP
 #define RISERCORE_LIFT_SAFFMANMEILIFT_HPP
 
-#include "../checks.hpp"
+#include "checks.hpp"
+#include "vector.hpp"
 
 #include <cmath>
 
@@ -62,6 +63,14 @@ inline double saffmanMeiLiftPrefactor(double d, double rho, double mu,
     const double Res = rho*d*d*magOmega/mu;
     return M_PI/8.0*d*d*std::sqrt(rho*mu/magOmega)
           *saffmanMeiCoefficientTimesSqrtRes(Rep, Res);
+}
+
+//- The lift force F_L = c (w x Omega) on a sphere of diameter d with slip
+//  w = u - v in a fluid of density rho and viscosity mu and vorticity Omega
+inline Vector saffmanMeiLiftForce(double d, double rho, double mu, const Vector& w,
+                                  const Vector& Omega)
+{
+    return saffmanMeiLiftPrefactor(d, rho, mu, w.norm(), Omega.norm())*w.cross(Omega);
 }
 
 } // namespace riser

@@ -39,7 +39,7 @@
 #ifndef RISERCORE_MOTION_HISTORYSTEPPER_HPP
 #define RISERCORE_MOTION_HISTORYSTEPPER_HPP
 
-#include "../basset/historyIntegral.hpp"
+#include "basset/historyIntegral.hpp"
 
 #include <cmath>
 

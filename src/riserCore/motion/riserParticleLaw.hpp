@@ -1,49 +1,46 @@
 // riserCore: the law of motion of one sphere in the oscillating riser, in
 // the lab frame, for the mesh-free engine (riserParticle). It knows the
-// forces, not how they are integrated (motion/riserIntegrators.hpp).
+// forces, not how they are integrated (motion/riserIntegrators.hpp):
 //
-//   (m_p + C_A m_f) dv/dt = F_D + F_L + (1 + C_A) m_f Du/Dt + (m_p - m_f) g + F_C
+//   (m_p + C_A m_f) dv/dt = F_D + F_L + C_A m_f Du/Dt + m_f Du/Dt + (m_p - m_f) g + F_C
 //   dx/dt = v
 //
-// (MODEL.md section 1: the added mass's dv/dt on the left; the fluid stress
-// m_f Du/Dt; the buoyant weight), with the carrier of riser::RiserFlow
-// evaluated exactly at the particle, the drag and lift of drag/ and lift/,
-// and the Hertz–Mindlin wall force of contact/ for the overlap
-// delta_n = R_p - (R - h), h the distance of the centre from the riser axis.
-// Each force can be switched off (a scene needs no more than it uses). The
-// Basset force is not part of this law: its history needs a fixed step
+// (doc/theory.md section 1: the added mass's dv/dt on the left; the fluid
+// stress m_f Du/Dt; the buoyant weight), with the carrier of
+// riser::RiserFlow evaluated exactly at the particle, each force from its
+// own folder of the core (the functions OpenFOAM's particle forces call
+// too), the list of forces of motion/forceList.hpp, and the Hertz–Mindlin
+// force of contact/ at the riser's wall (riser::Wall). Each force can be
+// switched off (a scene needs no more than it uses). The Basset force is not
+// part of this law: its history needs a fixed step
 // (motion/historyStepper.hpp), and the engine's integrators adapt theirs.
 //
 // The contact's tangential spring delta_t is part of the state: it grows
 // with the tangential velocity of the contact point while in contact and is
 // kept in the tangent plane; the Coulomb cap resets it (springAfter).
 //
+// ParticleSystem puts the law in the form the integrators step,
+// dy/dt = f(t, y), y = (x, v, delta_t).
+//
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_MOTION_RISERPARTICLELAW_HPP
 #define RISERCORE_MOTION_RISERPARTICLELAW_HPP
 
-#include "../carrier/riserFlow.hpp"
-#include "../contact/hertzMindlin.hpp"
-#include "../drag/dragCoefficient.hpp"
-#include "../lift/saffmanMeiLift.hpp"
-#include "../vector.hpp"
+#include "motion/forceList.hpp"
+
+#include "addedMass/addedMass.hpp"
+#include "carrier/riserFlow.hpp"
+#include "contact/hertzMindlin.hpp"
+#include "drag/dragCoefficient.hpp"
+#include "fluidStress/fluidStress.hpp"
+#include "gravity/buoyantWeight.hpp"
+#include "lift/saffmanMeiLift.hpp"
+#include "vector.hpp"
+#include "wall/wall.hpp"
 
 #include <optional>
 
 namespace riser {
-
-//- Which forces act, and their coefficients
-struct ForceSelection
-{
-    bool drag = true;
-    DragLaw dragLaw = DragLaw::paper;
-    double pipeDiameter = 0.0;      //!< for the wall factors (0: the riser's)
-    bool lift = true;
-    bool addedMass = true;
-    double CA = 0.5;
-    bool fluidStress = true;
-    bool gravity = true;
-};
 
 //- The particle's state: position, velocity, tangential contact spring
 struct ParticleState
@@ -51,19 +48,6 @@ struct ParticleState
     Vector x = Vector::Zero();
     Vector v = Vector::Zero();
     Vector spring = Vector::Zero();
-};
-
-//- Every force at one state (lab frame), the contact's overlaps included
-struct ForceReport
-{
-    Vector drag = Vector::Zero();
-    Vector lift = Vector::Zero();
-    Vector addedMass = Vector::Zero();      //!< its explicit part C_A m_f Du/Dt
-    Vector fluidStress = Vector::Zero();
-    Vector gravity = Vector::Zero();
-    Vector contact = Vector::Zero();
-    double overlap = 0.0;                   //!< delta_n (> 0 in contact)
-    bool sliding = false;
 };
 
 class RiserParticleLaw
@@ -84,9 +68,13 @@ public:
         requirePositive(law, "rho_f", rhoF);
         requirePositive(law, "mu", mu);
         requireNonNegative(law, "C_A", forces.CA);
+        forces_[Force::contact] = bool(contact_);
     }
 
     const RiserFlow& riser() const { return riser_; }
+    //- The wall the particle touches
+    const Wall& wall() const { return riser_.wall(); }
+    const ForceSelection& selection() const { return forces_; }
     double diameter() const { return d_; }
     double radius() const { return 0.5*d_; }
     double volume() const { return M_PI*d_*d_*d_/6.0; }
@@ -94,109 +82,90 @@ public:
     double fluidMass() const { return rhoF_*volume(); }
     bool hasContact() const { return bool(contact_); }
     const HertzMindlin& contactLaw() const { return *contact_; }
+    ContactBody body() const { return ContactBody{radius(), mass()}; }
 
     //- Mass with the added mass (the left-hand side)
     double inertia() const
     {
-        return mass() + (forces_.addedMass ? forces_.CA*fluidMass() : 0.0);
+        return mass() + (forces_[Force::addedMass] ? addedMassInertia(forces_.CA, fluidMass()) : 0.0);
     }
 
-    //- Riser axis at time t (passes through (x_c, 0, z))
-    Vector axis(double t) const { return Vector(riser_.axisPosition(t), 0.0, 0.0); }
-
-    //- Wall velocity (the riser's)
-    Vector wallVelocity(double t) const { return Vector(riser_.riserVelocity(t), 0.0, 0.0); }
-
-    //- Distance of the centre from the axis
-    double axisDistance(const Vector& x, double t) const
+    //- The wall contact point of the particle centred at x
+    ContactPoint wallContact(const Vector& x, double t) const
     {
-        const Vector r = x - axis(t);
-        return std::hypot(r.x(), r.y());
+        return wall().contactPoint(x, radius(), t);
     }
 
-    //- Overlap delta_n = R_p - (R - h) (negative: the gap)
-    double overlap(const Vector& x, double t) const
-    {
-        return radius() - (riser_.radius() - axisDistance(x, t));
-    }
+    //- Overlap with the wall (negative: the gap)
+    double overlap(const Vector& x, double t) const { return wall().overlap(x, radius(), t); }
 
-    //- Unit normal from the centre towards the nearest wall
-    Vector wallNormal(const Vector& x, double t) const
-    {
-        Vector r = x - axis(t);
-        r.z() = 0.0;
-        const double h = r.norm();
-        return h > 0.0 ? Vector(r/h) : Vector(1.0, 0.0, 0.0);
-    }
-
-    //- Every force at time t and state s
-    ForceReport forces(double t, const ParticleState& s) const
+    //- Every force at time t and state s, the contact's at contact point c
+    //  (none: no contact force)
+    ForceReport forces(double t, const ParticleState& s, const std::optional<ContactPoint>& c) const
     {
         ForceReport f;
         const Vector u = riser_.velocity(s.x, t);
         const Vector w = u - s.v;
-        const double slip = w.norm();
         const Vector DuDt = riser_.materialDerivative(s.x, t);
-        if (forces_.drag)
+        if (forces_[Force::drag])
         {
-            const double Re = rhoF_*slip*d_/mu_;
-            f.drag = dragFactor(forces_.dragLaw, factors_, d_, mu_, Re)*w;
+            f[Force::drag] = dragForce(forces_.dragLaw, factors_, d_, rhoF_, mu_, w);
         }
-        if (forces_.lift)
+        if (forces_[Force::lift])
         {
-            const Vector Omega = riser_.vorticity(s.x, t);
-            f.lift = saffmanMeiLiftPrefactor(d_, rhoF_, mu_, slip, Omega.norm())*w.cross(Omega);
+            f[Force::lift] = saffmanMeiLiftForce(d_, rhoF_, mu_, w, riser_.vorticity(s.x, t));
         }
-        if (forces_.addedMass) f.addedMass = forces_.CA*fluidMass()*DuDt;
-        if (forces_.fluidStress) f.fluidStress = fluidMass()*DuDt;
-        if (forces_.gravity) f.gravity = (mass() - fluidMass())*g_;
-        if (contact_)
+        if (forces_[Force::addedMass])
         {
-            f.overlap = overlap(s.x, t);
+            f[Force::addedMass] = addedMassForce(forces_.CA, fluidMass(), DuDt);
+        }
+        if (forces_[Force::fluidStress]) f[Force::fluidStress] = fluidStressForce(fluidMass(), DuDt);
+        if (forces_[Force::gravity]) f[Force::gravity] = buoyantWeight(mass(), fluidMass(), g_);
+        if (contact_ && c)
+        {
+            f.overlap = c->overlap;
             if (f.overlap > 0.0)
             {
-                const ContactForce c = contact_->force
+                const ContactForce cf = contact_->force
                 (
-                    ContactBody{radius(), mass()}, f.overlap, wallNormal(s.x, t),
-                    s.v - wallVelocity(t), s.spring
+                    body(), f.overlap, c->normal, s.v - c->velocity, s.spring
                 );
-                f.contact = c.normal + c.tangential;
-                f.sliding = c.sliding;
+                f[Force::contact] = cf.normal + cf.tangential;
+                f.sliding = cf.sliding;
             }
         }
         return f;
     }
 
+    //- Every force at time t and state s, the contact at the wall included
+    ForceReport forces(double t, const ParticleState& s) const
+    {
+        return forces(t, s, contact_ ? std::optional<ContactPoint>(wallContact(s.x, t)) : std::nullopt);
+    }
+
     //- dv/dt at time t and state s
     Vector acceleration(double t, const ParticleState& s) const
     {
-        const ForceReport f = forces(t, s);
-        return (f.drag + f.lift + f.addedMass + f.fluidStress + f.gravity + f.contact)/inertia();
+        return forces(t, s).total()/inertia();
     }
 
     //- d(spring)/dt: the contact point's tangential velocity relative to
-    //  the wall while in contact (zero outside)
-    Vector springRate(double t, const ParticleState& s) const
+    //  the body touched, while in contact (zero outside)
+    static Vector springRate(const ParticleState& s, const ContactPoint& c)
     {
-        if (!contact_ || overlap(s.x, t) <= 0.0) return Vector::Zero();
-        const Vector n = wallNormal(s.x, t);
-        const Vector U = s.v - wallVelocity(t);
-        return U - U.dot(n)*n;
+        if (c.overlap <= 0.0) return Vector::Zero();
+        const Vector U = s.v - c.velocity;
+        return U - U.dot(c.normal)*c.normal;
     }
 
     //- The spring after the Coulomb cap, kept in the tangent plane
     Vector cappedSpring(double t, const ParticleState& s) const
     {
         if (!contact_) return Vector::Zero();
-        const double dn = overlap(s.x, t);
-        if (dn <= 0.0) return Vector::Zero();
-        const Vector n = wallNormal(s.x, t);
-        Vector spring = s.spring - s.spring.dot(n)*n;
-        const ContactForce c = contact_->force
-        (
-            ContactBody{radius(), mass()}, dn, n, s.v - wallVelocity(t), spring
-        );
-        return c.springAfter;
+        const ContactPoint c = wallContact(s.x, t);
+        if (c.overlap <= 0.0) return Vector::Zero();
+        const Vector spring = s.spring - s.spring.dot(c.normal)*c.normal;
+        return contact_->force(body(), c.overlap, c.normal, s.v - c.velocity, spring).springAfter;
     }
 
 private:
@@ -206,6 +175,56 @@ private:
     ForceSelection forces_;
     WallFactors factors_;
     std::optional<HertzMindlin> contact_;
+};
+
+
+//- The law as the first-order system the integrators step: y = (x, v,
+//  delta_t); with contact off, no contact force and no spring
+class ParticleSystem
+{
+public:
+    using State = Eigen::Matrix<double, 9, 1>;
+
+    ParticleSystem(const RiserParticleLaw& law, bool contact)
+    :
+        law_(law), contact_(contact && law.hasContact())
+    {}
+
+    static State pack(const ParticleState& s)
+    {
+        State y;
+        y << s.x, s.v, s.spring;
+        return y;
+    }
+
+    static ParticleState unpack(const State& y)
+    {
+        ParticleState s;
+        s.x = y.segment<3>(0);
+        s.v = y.segment<3>(3);
+        s.spring = y.segment<3>(6);
+        return s;
+    }
+
+    //- dy/dt at (t, y)
+    State rate(double t, const State& y) const
+    {
+        ParticleState s = unpack(y);
+        State dy;
+        if (!contact_)
+        {
+            s.spring.setZero();
+            dy << s.v, law_.forces(t, s, std::nullopt).total()/law_.inertia(), Vector::Zero();
+            return dy;
+        }
+        const ContactPoint c = law_.wallContact(s.x, t);
+        dy << s.v, law_.forces(t, s, c).total()/law_.inertia(), RiserParticleLaw::springRate(s, c);
+        return dy;
+    }
+
+private:
+    const RiserParticleLaw& law_;
+    bool contact_;
 };
 
 } // namespace riser

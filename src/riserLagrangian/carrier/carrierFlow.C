@@ -67,7 +67,7 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
           ? new riser::RiserFlow(*motion_)
           : new riser::RiserFlow
             (
-                motion_->diameter(), motion_->centreLineSpeed(), 0, 0, 0
+                motion_->diameter(), motion_->centreLineSpeed(), riser::RiserMotion::atRest()
             )
         );
         if (dict.found("carrier"))
@@ -149,10 +149,10 @@ const riser::RiserFlow& Foam::carrierFlow::riser() const
 }
 
 
-const riser::RiserFlow& Foam::carrierFlow::riserMotion() const
+const riser::RiserMotion& Foam::carrierFlow::riserMotion() const
 {
     riser();
-    return *motion_;
+    return motion_->motion();
 }
 
 

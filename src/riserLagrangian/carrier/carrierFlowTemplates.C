@@ -12,25 +12,8 @@ template<class ParcelType>
 const Foam::point& Foam::carrierFlow::position(const ParcelType& p) const
 {
     positionCache& c = lastPosition_;
-    const label timeIndex = mesh_.time().timeIndex();
-    if
-    (
-        c.particle != static_cast<const void*>(&p)
-     || c.timeIndex != timeIndex
-     || c.stepFraction != p.stepFraction()
-     || c.celli != p.cell()
-     || c.tetFacei != p.tetFace()
-     || c.tetPti != p.tetPt()
-     || c.coordinates != p.coordinates()
-    )
+    if (!c.key.matchOrTake(p, mesh_.time().timeIndex()))
     {
-        c.particle = &p;
-        c.timeIndex = timeIndex;
-        c.stepFraction = p.stepFraction();
-        c.celli = p.cell();
-        c.tetFacei = p.tetFace();
-        c.tetPti = p.tetPt();
-        c.coordinates = p.coordinates();
         c.position = p.position();
     }
     return c.position;

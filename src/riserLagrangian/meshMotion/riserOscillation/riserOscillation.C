@@ -71,7 +71,7 @@ bool Foam::solidBodyMotionFunctions::riserOscillation::read
             false
         )
     );
-    motion_.reset(new riser::RiserFlow(carrierFlow::readRiser(riserDict)));
+    motion_.reset(new riser::RiserMotion(carrierFlow::readRiser(riserDict).motion()));
     return true;
 }
 

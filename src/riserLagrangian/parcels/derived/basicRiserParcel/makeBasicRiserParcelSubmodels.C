@@ -30,7 +30,12 @@ makeParcelCloudFunctionObjects(basicRiserCloud);
 makeParcelForces(basicRiserCloud);
 makeParcelDispersionModels(basicRiserCloud);
 makeParcelInjectionModels(basicRiserCloud);
-makeParcelCollisionModels(basicRiserCloud);
+// the collision models live on the colliding cloud below the riser layer
+namespace Foam
+{
+    typedef basicRiserCloud::collidingCloudType basicRiserCollidingCloud;
+}
+makeParcelCollisionModels(basicRiserCollidingCloud);
 makeParcelPatchInteractionModels(basicRiserCloud);
 makeParcelStochasticCollisionModels(basicRiserCloud);
 makeParcelSurfaceFilmModels(basicRiserCloud);

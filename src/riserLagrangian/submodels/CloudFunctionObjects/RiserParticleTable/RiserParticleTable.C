@@ -8,6 +8,8 @@
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
 #include "boundBox.H"
+#include "coreVector.H"
+#include "output/particleTable.hpp"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -22,14 +24,16 @@ Foam::OFstream& Foam::RiserParticleTable<CloudType>::file()
                 this->owner().mesh(), this->owner().name(), typeName, "particles"
             );
         OFstream& os = file_();
-        os  << "# riserParticleTable, SI units; relative: to the riser axis"
-            << " and velocity" << nl
-            << "# t origProc origId x y z Ux Uy Uz xr yr Urx Ury Urz lift"
-            << " Fc_x Fc_y Fc_z deltaN deltaT";
+        std::vector<std::string> forceNames;
         for (const auto& force : this->owner().forces())
         {
-            const word n = "F_" + force.type();
-            os  << ' ' << n << "_x " << n << "_y " << n << "_z";
+            forceNames.push_back(force.type());
+        }
+        os  << "# riserParticleTable, SI units; relative: to the riser axis"
+            << " and velocity" << nl << '#';
+        for (const std::string& column : riser::particleTableColumns(forceNames))
+        {
+            os  << ' ' << column.c_str();
         }
         os  << nl;
     }
@@ -92,10 +96,9 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
     const Time& time = cloud.mesh().time();
     const scalar t = time.value();
     const scalar dt = time.deltaTValue();
-    const riser::RiserFlow& flow = carrier_.riser();
-    const riser::RiserFlow& motion = carrier_.riserMotion();
+    const riser::RiserMotion& motion = carrier_.riserMotion();
+    const riser::Wall& wall = carrier_.wall();
     const bool labFrame = carrier_.frame() == carrierFlow::simulationFrame::lab;
-    const scalar xc = motion.axisPosition(t), Ur = motion.riserVelocity(t);
 
     OFstream& os = file();
     cloud.forces().cacheFields(true);
@@ -118,35 +121,30 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
         if (jump > 0.5*length_) offset -= length_;
         if (jump < -0.5*length_) offset += length_;
         lastZ_[key] = x.z();
-        const scalar lift = x.z() + offset - z0_[key];
 
-        // lab and relative position and velocity
-        const point xLab = labFrame ? x : x + vector(xc, 0, 0);
-        const vector ULab = labFrame ? p.U() : p.U() + vector(Ur, 0, 0);
-        const vector xRel = xLab - vector(xc, 0, 0);
-        const vector URel = ULab - vector(Ur, 0, 0);
-
-        // wall overlap and tangential spring
-        const scalar h =
-            Foam::sqrt(sqr(x.x() - flow.axisPosition(t)) + sqr(x.y()));
-        const scalar deltaN = max(0, h + 0.5*p.d() - flow.radius());
-        scalar deltaT = 0;
+        riser::ParticleTableRow row
+        (
+            t, key.first(), key.second(),
+            labFrame ? toCore(x) : motion.toLabFrame(toCore(x), t),
+            labFrame ? toCore(p.U()) : motion.labVelocity(toCore(p.U()), t),
+            motion
+        );
+        row.lift = x.z() + offset - z0_[key];
+        row.contactForce = toCore(p.f());
+        row.deltaN = max(0, wall.overlap(toCore(x), 0.5*p.d(), t));
         for (const auto& record : p.collisionRecords().wallRecords())
         {
-            deltaT = max(deltaT, mag(record.collisionData()));
+            row.deltaT = max(row.deltaT, mag(record.collisionData()));
         }
-
-        os  << t << ' ' << key.first() << ' ' << key.second() << ' '
-            << xLab.x() << ' ' << xLab.y() << ' ' << xLab.z() << ' '
-            << ULab.x() << ' ' << ULab.y() << ' ' << ULab.z() << ' '
-            << xRel.x() << ' ' << xRel.y() << ' '
-            << URel.x() << ' ' << URel.y() << ' ' << URel.z() << ' '
-            << lift << ' '
-            << p.f().x() << ' ' << p.f().y() << ' ' << p.f().z() << ' '
-            << deltaN << ' ' << deltaT;
         for (const vector& F : particleForces(cloud, p, td, dt))
         {
-            os  << ' ' << F.x() << ' ' << F.y() << ' ' << F.z();
+            row.forces.push_back(toCore(F));
+        }
+        const std::vector<double> values = riser::particleTableValues(row);
+        os  << values[0];
+        for (std::size_t i = 1; i < values.size(); ++i)
+        {
+            os  << ' ' << values[i];
         }
         os  << nl;
     }

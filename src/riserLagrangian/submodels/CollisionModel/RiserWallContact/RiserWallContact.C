@@ -109,10 +109,10 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
 {
     const Time& time = this->owner().mesh().time();
     const riser::RiserFlow& flow = carrier_.riser();
+    const riser::Wall& wall = carrier_.wall();
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
-    const scalar xc = flow.axisPosition(t0);
-    const scalar wallSpeedMax = flow.amplitude()*flow.omega();
+    const scalar wallSpeedMax = flow.motion().maxSpeed();
 
     label nSub = 1, nNear = 0;
     for (const parcelType& p : this->owner())
@@ -125,10 +125,8 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
                 << flow.diameter() << " (constant/riserProperties)"
                 << exit(FatalError);
         }
-        const point x = p.position();
-        const scalar h = Foam::sqrt(sqr(x.x() - xc) + sqr(x.y()));
         const scalar speed = mag(p.U()) + wallSpeedMax;
-        const scalar gap = flow.radius() - h - 0.5*p.d();
+        const scalar gap = wall.distance(toCore(p.position()), t0) - 0.5*p.d();
         if (gap > speed*dt)
         {
             continue;
@@ -161,37 +159,32 @@ template<class CloudType>
 void Foam::RiserWallContact<CloudType>::collide()
 {
     const Time& time = this->owner().mesh().time();
-    const riser::RiserFlow& flow = carrier_.riser();
+    const riser::Wall& wall = carrier_.wall();
     const scalar t = time.value();
     const scalar dt = time.deltaTValue();
-    const scalar xc = flow.axisPosition(t);
-    const vector Uwall(flow.riserVelocity(t), 0, 0);
-    const scalar R = flow.radius();
-
 
     for (parcelType& p : this->owner())
     {
         p.f() = Zero;
         p.torque() = Zero;
 
-        const point x = p.position();
-        const vector r(x.x() - xc, x.y(), 0);
-        const scalar h = mag(r);
         const scalar Rp = 0.5*p.d();
+        const riser::ContactPoint cp = wall.contactPoint(toCore(p.position()), Rp, t);
+        const vector Uwall = fromCore(cp.velocity);
         const labelPair key(p.origProc(), p.origId());
 
-        if (h > R && lost_.insert(key))
+        if (cp.overlap > Rp && lost_.insert(key))
         {
             WarningInFunction
                 << "particle " << key << " has its centre outside the pipe at t = "
-                << t << ": distance from the axis " << h << " > D/2 = " << R
-                << "; " << lost_.size() << " particle(s) lost so far" << endl;
+                << t << ": " << cp.overlap - Rp << " beyond the wall; "
+                << lost_.size() << " particle(s) lost so far" << endl;
         }
 
         const vector spin = rotation_ ? p.omega() : vector::zero;
-        const scalar overlap = h + Rp - R;
+        const scalar overlap = cp.overlap;
 
-        if (overlap <= 0 || h < VSMALL)
+        if (overlap <= 0)
         {
             auto iter = events_.find(key);
             if (iter.found())
@@ -215,7 +208,7 @@ void Foam::RiserWallContact<CloudType>::collide()
             continue;
         }
 
-        const vector n = r/h;
+        const vector n = fromCore(cp.normal);
         const vector U = p.U() - Uwall + (spin ^ (Rp*n));
 
         // the tangential spring, kept in the current tangent plane

@@ -5,6 +5,8 @@
 
 #include "RiserAddedMassForce.H"
 #include "checkedEntry.H"
+#include "addedMass/addedMass.hpp"
+#include "coreVector.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -48,7 +50,14 @@ Foam::forceSuSp Foam::RiserAddedMassForce<CloudType>::calcCoupled
     // C_A rho_c V_p Du/Dt: relative accelerations, the same in either frame
     return forceSuSp
     (
-        CA_*mass*td.rhoc()/p.rho()*this->carrier_.materialDerivative(p),
+        fromCore
+        (
+            riser::addedMassForce
+            (
+                CA_, mass*td.rhoc()/p.rho(),
+                toCore(this->carrier_.materialDerivative(p))
+            )
+        ),
         0
     );
 }
@@ -62,7 +71,7 @@ Foam::scalar Foam::RiserAddedMassForce<CloudType>::massAdd
     const scalar mass
 ) const
 {
-    return CA_*mass*td.rhoc()/p.rho();
+    return riser::addedMassInertia(CA_, mass*td.rhoc()/p.rho());
 }
 
 

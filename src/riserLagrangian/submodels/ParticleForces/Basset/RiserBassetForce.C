@@ -57,25 +57,11 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
 ) const
 {
     coefficientCache& c = lastCoefficient_;
-    const label timeIndex = this->mesh().time().timeIndex();
-    if
-    (
-        c.particle == static_cast<const void*>(&p)
-     && c.timeIndex == timeIndex
-     && c.stepFraction == p.stepFraction()
-     && c.celli == p.cell()
-     && c.coordinates == p.coordinates()
-     && c.U == p.U()
-     && c.muc == muc
-    )
+    const bool sameState = c.key.matchOrTake(p, this->mesh().time().timeIndex());
+    if (sameState && c.U == p.U() && c.muc == muc)
     {
         return c.KH;
     }
-    c.particle = &p;
-    c.timeIndex = timeIndex;
-    c.stepFraction = p.stepFraction();
-    c.celli = p.cell();
-    c.coordinates = p.coordinates();
     c.U = p.U();
     c.muc = muc;
 
@@ -97,71 +83,13 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
 
 
 template<class CloudType>
-void Foam::RiserBassetForce<CloudType>::prepare()
+void Foam::RiserBassetForce<CloudType>::notStarted() const
 {
-    const Time& time = this->mesh().time();
-    if (time.timeIndex() == preparedIndex_)
-    {
-        return;
-    }
-    preparedIndex_ = time.timeIndex();
-
-    const scalar h = kernel_.step();
-    if (mag(time.deltaTValue() - h) > 1e-10*h)
-    {
-        FatalErrorInFunction
-            << "riserBasset: the history's step is the flow step deltaT = "
-            << h << " s, set at start; deltaT is now " << time.deltaTValue()
-            << " s. Keep deltaT constant (adjustTimeStep no;)."
-            << exit(FatalError);
-    }
-
-    for (auto& p : this->owner())
-    {
-        if (p.historyStarted())
-        {
-            p.historyKnown() = kernel_.knownPart(p.history());
-        }
-    }
-}
-
-
-template<class CloudType>
-void Foam::RiserBassetForce<CloudType>::advance()
-{
-    const Time& time = this->mesh().time();
-    if (time.timeIndex() == advancedIndex_)
-    {
-        return;
-    }
-    advancedIndex_ = time.timeIndex();
-
-    CloudType& cloud = this->owner();
-    typename CloudType::parcelType::trackingData td(cloud);
-    const scalar dt = time.deltaTValue();
-
-    for (auto& p : cloud)
-    {
-        const endOfStep<typename CloudType::parcelType> done(p);
-        const vector g =
-            carrier_.materialDerivative(p) - (p.U() - p.UNode())/dt;
-        if (p.historyStarted())
-        {
-            kernel_.push(p.history(), g);
-        }
-        else if (p.historyReleased())
-        {
-            p.history() = kernel_.released(p.history().slip0, g);
-        }
-        else
-        {
-            // never evaluated in this step: start now, without a slope
-            p.setCellValues(cloud, td);
-            const vector w0 = carrier_.velocity(p, td.Uc()) - p.U();
-            p.history() = kernel_.start(w0, vector(Zero));
-        }
-        p.UNode() = p.U();
-    }
+    FatalErrorInFunction
+        << "riserBasset: the step at t = " << this->mesh().time().value()
+        << " was not started by the cloud; the Basset force needs the riser"
+        << " cloud (riserParcelFoam), which advances the histories"
+        << exit(FatalError);
 }
 
 
@@ -193,8 +121,8 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
       : 0
     ),
     kernel_(readKernel(this->coeffs(), mesh.time().deltaTValue())),
-    preparedIndex_(-1),
-    advancedIndex_(-1)
+    stepOpen_(false),
+    endedTime_(-GREAT)
 {}
 
 
@@ -209,8 +137,8 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
     coefficient_(f.coefficient_),
     frequency_(f.frequency_),
     kernel_(f.kernel_),
-    preparedIndex_(f.preparedIndex_),
-    advancedIndex_(f.advancedIndex_)
+    stepOpen_(f.stepOpen_),
+    endedTime_(f.endedTime_)
 {}
 
 
@@ -219,23 +147,75 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
 template<class CloudType>
 void Foam::RiserBassetForce<CloudType>::cacheFields(const bool store)
 {
-    // the material derivative is held from before prepare() until after
-    // advance(), which needs it at the end of the step
-    if (store)
+    carrier_.cacheMaterialDerivative
+    (
+        store, this->owner().solution().interpolationSchemes()
+    );
+}
+
+
+template<class CloudType>
+void Foam::RiserBassetForce<CloudType>::startStep()
+{
+    const Time& time = this->mesh().time();
+    stepOpen_ = true;
+
+    const scalar h = kernel_.step();
+    if (mag(time.deltaTValue() - h) > 1e-10*h)
     {
-        carrier_.cacheMaterialDerivative
-        (
-            true, this->owner().solution().interpolationSchemes()
-        );
-        prepare();
+        FatalErrorInFunction
+            << "riserBasset: the history's step is the flow step deltaT = "
+            << h << " s, set at start; deltaT is now " << time.deltaTValue()
+            << " s. Keep deltaT constant (adjustTimeStep no;)."
+            << exit(FatalError);
     }
-    else
+
+    for (auto& p : this->owner())
     {
-        advance();
-        carrier_.cacheMaterialDerivative
-        (
-            false, this->owner().solution().interpolationSchemes()
-        );
+        if (p.historyStarted())
+        {
+            p.historyKnown() = kernel_.knownPart(p.history());
+        }
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserBassetForce<CloudType>::endStep()
+{
+    const Time& time = this->mesh().time();
+    if (!stepOpen_)
+    {
+        notStarted();
+    }
+    stepOpen_ = false;
+    endedTime_ = time.value();
+
+    CloudType& cloud = this->owner();
+    typename CloudType::parcelType::trackingData td(cloud);
+    const scalar dt = time.deltaTValue();
+
+    for (auto& p : cloud)
+    {
+        const endOfStep<typename CloudType::parcelType> done(p);
+        const vector g =
+            carrier_.materialDerivative(p) - (p.U() - p.UNode())/dt;
+        if (p.historyStarted())
+        {
+            kernel_.push(p.history(), g);
+        }
+        else if (p.historyReleased())
+        {
+            p.history() = kernel_.released(p.history().slip0, g);
+        }
+        else
+        {
+            // never evaluated in this step: start now, without a slope
+            p.setCellValues(cloud, td);
+            const vector w0 = carrier_.velocity(p, td.Uc()) - p.U();
+            p.history() = kernel_.start(w0, vector(Zero));
+        }
+        p.UNode() = p.U();
     }
 }
 
@@ -251,6 +231,12 @@ Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
+    const bool afterStep =
+        !stepOpen_ && this->mesh().time().value() == endedTime_;
+    if (!stepOpen_ && !afterStep)
+    {
+        notStarted();
+    }
     const scalar KH = historyCoefficient(p, td, td.muc());
     if (!p.historyStarted())
     {
@@ -269,7 +255,7 @@ Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
             0
         );
     }
-    if (advancedIndex_ == this->mesh().time().timeIndex())
+    if (afterStep)
     {
         // after the step (output): the whole force at the end of the step
         // (none for a history that starts now)
@@ -295,8 +281,9 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::massAdd
     const scalar mass
 ) const
 {
-    if (advancedIndex_ == this->mesh().time().timeIndex())
+    if (!stepOpen_)
     {
+        // after the step (output): no step to be implicit in
         return 0;
     }
     return

@@ -4,6 +4,8 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserFluidStressForce.H"
+#include "fluidStress/fluidStress.hpp"
+#include "coreVector.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -59,13 +61,12 @@ Foam::forceSuSp Foam::RiserFluidStressForce<CloudType>::calcCoupled
 {
     // rho_c V_p Du/Dt, V_p = mass/rho_p, with the fluid's inertial
     // acceleration (the frame's acceleration added in the riser frame)
+    const vector a =
+        carrier_.materialDerivative(p)
+      + carrier_.frameAcceleration(carrier_.particleTime(p.stepFraction()));
     return forceSuSp
     (
-        mass*td.rhoc()/p.rho()
-       *(
-            carrier_.materialDerivative(p)
-          + carrier_.frameAcceleration(carrier_.particleTime(p.stepFraction()))
-        ),
+        fromCore(riser::fluidStressForce(mass*td.rhoc()/p.rho(), toCore(a))),
         0
     );
 }

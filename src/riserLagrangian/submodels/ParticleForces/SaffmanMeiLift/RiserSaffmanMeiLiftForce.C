@@ -5,6 +5,7 @@
 
 #include "RiserSaffmanMeiLiftForce.H"
 #include "lift/saffmanMeiLift.hpp"
+#include "coreVector.H"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -52,12 +53,18 @@ Foam::forceSuSp Foam::RiserSaffmanMeiLiftForce<CloudType>::calcCoupled
     const scalar muc
 ) const
 {
-    const vector Omega = carrier_.vorticity(p);
     const vector w = carrier_.velocity(p, td.Uc()) - p.U();
-    const scalar coeff =
-        riser::saffmanMeiLiftPrefactor(p.d(), td.rhoc(), muc, mag(w), mag(Omega));
-
-    return forceSuSp(coeff*(w ^ Omega), 0);
+    return forceSuSp
+    (
+        fromCore
+        (
+            riser::saffmanMeiLiftForce
+            (
+                p.d(), td.rhoc(), muc, toCore(w), toCore(carrier_.vorticity(p))
+            )
+        ),
+        0
+    );
 }
 
 

@@ -84,7 +84,7 @@ Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
     }
 
     const vector u = carrier_.velocity(p, td.Uc());
-    const scalar ReExact = td.rhoc()*mag(u - p.U())*p.d()/muc;
+    const scalar ReExact = riser::particleReynolds(td.rhoc(), mag(u - p.U()), p.d(), muc);
     const scalar Sp = riser::dragFactor(law_, factors, p.d(), muc, ReExact);
     return forceSuSp(Sp*(u - td.Uc()), Sp);
 }
