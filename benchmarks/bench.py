@@ -46,14 +46,14 @@ import json
 import math
 import os
 import platform
-import re
 import shutil
 import statistics
 import subprocess
-import sys
 import time
 
 import riserCases as rc
+from riserfoam import foamfields
+from riserfoam.cases import run
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -452,37 +452,33 @@ class Bench:
                     out[k]["ratioToReferenceAllRepeats"][str(n)] = ratios
         return out
 
-    # --- suite 1: against stock on the moving mesh
-    def suite_stock(self):
+    def against_stock(self, suite, keys, steps, reps, mesh, frame):
+        """N = 1 and N particles of the variants keys (the first: the
+        stock reference), alternated, steps steps, reps repeats."""
         n = 2000 if self.quick else 10000
-        steps = 12 if self.quick else 25
-        reps = 2 if self.quick else 3
-        keys = ["stockDyM", "riserLab", "riserLabBasset", "stockDyMCarrier"]
-        self.say("suite stock (moving mesh, lab frame): N = 1 and %d, %d steps, %d repeats"
-                 % (n, steps, reps))
-        runs = self.alternate("stock", keys, [1, n], steps, 3, reps)
-        s = self.summarise(runs, 1, ref="stockDyM")
-        self.results["suites"]["stock"] = {
-            "frame": "lab (moving mesh, riserOscillation for both solvers)",
+        self.say("suite %s (%s): N = 1 and %d, %d steps, %d repeats" % (suite, mesh, n, steps, reps))
+        runs = self.alternate(suite, keys, [1, n], steps, 3, reps)
+        s = self.summarise(runs, 1, ref=keys[0])
+        self.results["suites"][suite] = {
+            "frame": frame,
             "N0": 1, "N": n, "steps": steps, "measuredSteps": [3, steps - 1], "repeats": reps,
             "variants": s,
         }
 
+    # --- suite 1: against stock on the moving mesh
+    def suite_stock(self):
+        self.against_stock("stock", ["stockDyM", "riserLab", "riserLabBasset", "stockDyMCarrier"],
+                           steps=12 if self.quick else 25, reps=2 if self.quick else 3,
+                           mesh="moving mesh, lab frame",
+                           frame="lab (moving mesh, riserOscillation for both solvers)")
+
     # --- suite 2: the riser frame against stock on the static mesh
     def suite_riser_frame(self):
-        n = 2000 if self.quick else 10000
-        steps = 30 if self.quick else 60
-        reps = 2 if self.quick else 5
-        keys = ["stockStatic", "riserFrame", "riserFrameBasset", "stockStaticCarrier"]
-        self.say("suite riserFrame (static mesh): N = 1 and %d, %d steps, %d repeats"
-                 % (n, steps, reps))
-        runs = self.alternate("riserFrame", keys, [1, n], steps, 3, reps)
-        s = self.summarise(runs, 1, ref="stockStatic")
-        self.results["suites"]["riserFrame"] = {
-            "frame": "riser (static mesh) for riserParcelFoam; static mesh for stock",
-            "N0": 1, "N": n, "steps": steps, "measuredSteps": [3, steps - 1], "repeats": reps,
-            "variants": s,
-        }
+        self.against_stock("riserFrame",
+                           ["stockStatic", "riserFrame", "riserFrameBasset", "stockStaticCarrier"],
+                           steps=30 if self.quick else 60, reps=2 if self.quick else 5,
+                           mesh="static mesh",
+                           frame="riser (static mesh) for riserParcelFoam; static mesh for stock")
 
     # --- suite 3: scaling with particles (riser frame, full physics)
     def suite_particles(self):
@@ -593,11 +589,10 @@ class Bench:
             path = os.path.join(self.build, "processors", "np%d" % np)
             rc.make_case(path, VARIANTS[key], self.mesh, n, steps, DT, LENGTH, write_at_end=True)
             if np > 1:
-                with open(os.path.join(path, "system", "decomposeParDict"), "w") as f:
-                    f.write(rc.header("dictionary", "decomposeParDict")
-                            + "numberOfSubdomains %d;\nmethod simple;\n"
-                              "coeffs { n (%d 1 1); }\n" % (np, np))
-                rc.run(["decomposePar", "-case", path], os.path.join(path, "log.decomposePar"))
+                rc.write_dictionary(os.path.join(path, "system", "decomposeParDict"),
+                                    "numberOfSubdomains %d;\nmethod simple;\n"
+                                    "coeffs { n (%d 1 1); }\n" % (np, np))
+                run(["decomposePar", "-case", path], os.path.join(path, "log.decomposePar"))
             cases[np] = path
         wall = {1: [], 2: []}
         cpu = {1: [], 2: []}
@@ -655,19 +650,6 @@ class Bench:
 
 # -------------------------------------------------------------- comparison
 
-def read_cloud_field(path):
-    """A lagrangian vector field or the positions (ascii): list of tuples."""
-    text = open(path).read()
-    text = text[text.index("}", text.index("FoamFile")) + 1:]
-    text = re.sub(r"//[^\n]*", "", text)
-    n = int(re.search(r"\d+", text).group(0))
-    out = [tuple(float(v) for v in m.group(1).split())
-           for m in re.finditer(r"\(([-+0-9.eE ]+)\)", text)]
-    if len(out) != n:
-        raise RuntimeError("%s: %d values read, %d expected" % (path, len(out), n))
-    return out
-
-
 def time_dir(case, t):
     for d in os.listdir(case):
         try:
@@ -689,8 +671,8 @@ def compare_clouds(serial, parallel, t, n):
             cloud = os.path.join(d, "lagrangian", "kinematicCloud")
             if not os.path.isdir(cloud):
                 continue
-            x = read_cloud_field(os.path.join(cloud, "positions"))
-            u = read_cloud_field(os.path.join(cloud, "U"))
+            x = foamfields.read_vectors(os.path.join(cloud, "positions"))
+            u = foamfields.read_vectors(os.path.join(cloud, "U"))
             rows += [a + b for a, b in zip(x, u)]
         return rows
     a = load([time_dir(serial, t)])

@@ -15,7 +15,7 @@ import os
 import shutil
 
 import bench
-import riserCases as rc
+from riserfoam import cases, foamfields
 
 
 def env_for(build):
@@ -48,21 +48,20 @@ def main():
     envs = {"A": env_for(args.A), "B": env_for(args.B)}
     out = {"A": args.A, "B": args.B, "machine": bench.machine(), "runs": []}
     for suite, key, n, steps in (plan if "cases" in args.parts else []):
-        cases = {}
+        runs = {}
         for tag in ("A", "B"):
-            cases[tag] = b.case("%s_%s" % (suite, tag), key, n, steps, write_at_end=True)
+            runs[tag] = b.case("%s_%s" % (suite, tag), key, n, steps, write_at_end=True)
         times = {"A": [], "B": []}
         for rep in range(args.reps):
             for tag in (("A", "B") if rep % 2 == 0 else ("B", "A")):
-                r = bench.run_solver(cases[tag], "riserParcelFoam", env=envs[tag])
+                r = bench.run_solver(runs[tag], "riserParcelFoam", env=envs[tag])
                 times[tag].append(bench.per_step(r["cpuStamps"], 3, steps - 1))
-        diff = bench.compare_clouds(cases["A"], cases["B"], steps * bench.DT, n) \
+        diff = bench.compare_clouds(runs["A"], runs["B"], steps * bench.DT, n) \
             if n > 1 else "n/a"
         if n == 1:
-            a = bench.read_cloud_field(os.path.join(bench.time_dir(cases["A"], steps * bench.DT),
-                                                    "lagrangian", "kinematicCloud", "positions"))
-            bb = bench.read_cloud_field(os.path.join(bench.time_dir(cases["B"], steps * bench.DT),
-                                                     "lagrangian", "kinematicCloud", "positions"))
+            a, bb = (foamfields.read_vectors(os.path.join(bench.time_dir(runs[tag], steps * bench.DT),
+                                                          "lagrangian", "kinematicCloud", "positions"))
+                     for tag in ("A", "B"))
             diff = {"identical": a == bb}
         row = {"suite": suite, "variant": key, "N": n, "steps": steps,
                "A": min(times["A"]), "B": min(times["B"]), "allA": times["A"], "allB": times["B"],
@@ -75,15 +74,8 @@ def main():
         flag = {}
         for tag in ("A", "B"):
             path = os.path.join(args.work, "flagship_%s" % tag)
-            if os.path.isdir(path):
-                shutil.rmtree(path)
-            src = os.path.join(os.environ["RISER_DIR"], "tutorials", "riser", "oscillatingContact")
-            for d in ("0", "constant", "system"):
-                shutil.copytree(os.path.join(src, d), os.path.join(path, d),
-                                ignore=shutil.ignore_patterns("polyMesh", "blockMeshDict"))
-            rc.run([os.path.join(os.environ["RISER_DIR"], "bin", "riserMesh"), "-D", "0.1", "-L", "0.2",
-                    "-n", "12", "-ends", "cyclic", "-case", path], os.path.join(path, "log.riserMesh"))
-            rc.run(["blockMesh", "-case", path], os.path.join(path, "log.blockMesh"))
+            cases.copy_tutorial("riser/oscillatingContact", path, root=os.environ["RISER_DIR"])
+            cases.riser_mesh(path, 0.1, 0.2, 12, root=os.environ["RISER_DIR"])
             flag[tag] = path
         ft = {"A": [], "B": []}
         for rep in range(args.reps):

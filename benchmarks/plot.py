@@ -39,48 +39,40 @@ def verdict(ok):
     return "**met**" if ok else "**missed**"
 
 
+def against_reference(st, keys, targets):
+    """Rows of a suite against its reference (the first of keys): cost per
+    particle-step, the ratio to the reference's, the target (targets)."""
+    v = st["variants"]
+    n = str(st["N"])
+    reference = keys[0]
+    ref = v[reference]["costPerParticleStep"][n]
+    rows = []
+    for k in keys:
+        c = v[k]["costPerParticleStep"][n]
+        target = targets.get(k)
+        ratio = v[k].get("ratioToReference", {}).get(n, c / ref)
+        spread = v[k].get("ratioToReferenceAllRepeats", {}).get(n, [ratio])
+        rows.append({
+            "key": k, "label": v[k]["label"],
+            "t1": v[k]["cpuPerStep"]["1"], "tN": v[k]["cpuPerStep"][n],
+            "perParticleStep": c, "ratio": ratio, "ratioRange": (min(spread), max(spread)),
+            "target": target, "met": None if target is None else ratio <= target,
+            "ratioTotal": v[k]["cpuPerStep"][n] / v[reference]["cpuPerStep"][n],
+        })
+    return rows
+
+
 def analyse(res):
     """The numbers of the summary, and the verdicts."""
     out = {}
     s = res["suites"]
     if "stock" in s:
-        st = s["stock"]
-        v = st["variants"]
-        n = str(st["N"])
-        ref = v["stockDyM"]["costPerParticleStep"][n]
-        rows = []
-        for k in ("stockDyM", "stockDyMCarrier", "riserLab", "riserLabBasset"):
-            c = v[k]["costPerParticleStep"][n]
-            target = TARGET_LAB.get(k)
-            ratio = v[k].get("ratioToReference", {}).get(n, c / ref)
-            spread = v[k].get("ratioToReferenceAllRepeats", {}).get(n, [ratio])
-            rows.append({
-                "key": k, "label": v[k]["label"],
-                "t1": v[k]["cpuPerStep"]["1"], "tN": v[k]["cpuPerStep"][n],
-                "perParticleStep": c, "ratio": ratio, "ratioRange": (min(spread), max(spread)),
-                "target": target, "met": None if target is None else ratio <= target,
-                "ratioTotal": v[k]["cpuPerStep"][n] / v["stockDyM"]["cpuPerStep"][n],
-            })
-        out["stock"] = rows
+        out["stock"] = against_reference(
+            s["stock"], ("stockDyM", "stockDyMCarrier", "riserLab", "riserLabBasset"), TARGET_LAB)
     if "riserFrame" in s:
-        st = s["riserFrame"]
-        v = st["variants"]
-        n = str(st["N"])
-        ref = v["stockStatic"]["costPerParticleStep"][n]
-        rows = []
-        for k in ("stockStatic", "stockStaticCarrier", "riserFrame", "riserFrameBasset"):
-            c = v[k]["costPerParticleStep"][n]
-            target = TARGET_RISER_FRAME if k == "riserFrameBasset" else None
-            ratio = v[k].get("ratioToReference", {}).get(n, c / ref)
-            spread = v[k].get("ratioToReferenceAllRepeats", {}).get(n, [ratio])
-            rows.append({
-                "key": k, "label": v[k]["label"],
-                "t1": v[k]["cpuPerStep"]["1"], "tN": v[k]["cpuPerStep"][n],
-                "perParticleStep": c, "ratio": ratio, "ratioRange": (min(spread), max(spread)),
-                "target": target, "met": None if target is None else ratio <= target,
-                "ratioTotal": v[k]["cpuPerStep"][n] / v["stockStatic"]["cpuPerStep"][n],
-            })
-        out["riserFrame"] = rows
+        out["riserFrame"] = against_reference(
+            s["riserFrame"], ("stockStatic", "stockStaticCarrier", "riserFrame", "riserFrameBasset"),
+            {"riserFrameBasset": TARGET_RISER_FRAME})
     if "particles" in s:
         st = s["particles"]
         rows = {}
@@ -131,31 +123,20 @@ def summary(res, a):
                  res["mesh"]["command"], res["mesh"]["cells"],
                  " **Quick variant (smaller N, fewer steps).**" if res.get("quick") else ""),
              ""]
-    if "stock" in a:
-        st = res["suites"]["stock"]
-        lines += ["## 1. Against stock on the moving mesh (lab frame, riserOscillation for both)", "",
+    for suite, title in (
+            ("stock", "## 1. Against stock on the moving mesh (lab frame, riserOscillation for both)"),
+            ("riserFrame", "## 2. Riser frame (static mesh) against stock on the static mesh")):
+        if suite not in a:
+            continue
+        st = res["suites"][suite]
+        lines += [title, "",
                   "N = %d particles against N0 = 1, %d steps (measured %d..%d), %d repeats%s." % (
                       st["N"], st["steps"], st["measuredSteps"][0], st["measuredSteps"][1],
                       st["repeats"], when(st)), "",
                   "| solver and models | t(1) ms/step | t(N) ms/step | us per particle-step | "
                   "ratio to stock drag (repeats' range) | target | |",
                   "|---|---:|---:|---:|---:|---:|---|"]
-        for r in a["stock"]:
-            lines.append("| %s | %s | %s | %s | %.2f (%.2f-%.2f) | %s | %s |" % (
-                r["label"], ms(r["t1"]), ms(r["tN"]), us(r["perParticleStep"]), r["ratio"],
-                r["ratioRange"][0], r["ratioRange"][1],
-                "<= %.1f" % r["target"] if r["target"] else "", verdict(r["met"]) if r["target"] else ""))
-        lines.append("")
-    if "riserFrame" in a:
-        st = res["suites"]["riserFrame"]
-        lines += ["## 2. Riser frame (static mesh) against stock on the static mesh", "",
-                  "N = %d particles against N0 = 1, %d steps (measured %d..%d), %d repeats%s." % (
-                      st["N"], st["steps"], st["measuredSteps"][0], st["measuredSteps"][1],
-                      st["repeats"], when(st)), "",
-                  "| solver and models | t(1) ms/step | t(N) ms/step | us per particle-step | "
-                  "ratio to stock drag (repeats' range) | target | |",
-                  "|---|---:|---:|---:|---:|---:|---|"]
-        for r in a["riserFrame"]:
+        for r in a[suite]:
             lines.append("| %s | %s | %s | %s | %.2f (%.2f-%.2f) | %s | %s |" % (
                 r["label"], ms(r["t1"]), ms(r["tN"]), us(r["perParticleStep"]), r["ratio"],
                 r["ratioRange"][0], r["ratioRange"][1],
@@ -326,6 +307,13 @@ def chart(res, a, path):
     for ax in axes.flat:
         ax.set_visible(False)
 
+    def against_particles(ax, ylabel, title):
+        ax.set_xlabel("particles N")
+        ax.set_ylabel(ylabel)
+        ax.set_title(title, fontsize=10)
+        ax.legend(fontsize=8)
+        ax.grid(True, which="both", alpha=0.3)
+
     def use(i, j):
         axes[i][j].set_visible(True)
         return axes[i][j]
@@ -369,22 +357,14 @@ def chart(res, a, path):
             x0, y0 = 1000, 1e3 * ref["t"][k0]
             ax.loglog([x0, ref["counts"][-1]], [y0, y0 * ref["counts"][-1] / x0], "k:", lw=1,
                       label="linear from N = 1e3")
-        ax.set_xlabel("particles N")
-        ax.set_ylabel("ms per step (CPU)")
-        ax.set_title("Scaling with particles (static mesh): time per step", fontsize=10)
-        ax.legend(fontsize=8)
-        ax.grid(True, which="both", alpha=0.3)
+        against_particles(ax, "ms per step (CPU)", "Scaling with particles (static mesh): time per step")
         ax = use(2, 0)
         for k, r in a["particles"].items():
             xs = [n for n in r["counts"] if n > 1]
             ax.semilogx(xs, [1e6 * r["perParticleStep"][r["counts"].index(n)] for n in xs], "o-",
                         color=colour(k), label=SHORT.get(k, k).replace("\n", " "))
         ax.set_ylim(bottom=0)
-        ax.set_xlabel("particles N")
-        ax.set_ylabel("us per particle-step (CPU)")
-        ax.set_title("Cost per particle-step, (t(N) - t(1))/(N - 1)", fontsize=10)
-        ax.legend(fontsize=8)
-        ax.grid(True, which="both", alpha=0.3)
+        against_particles(ax, "us per particle-step (CPU)", "Cost per particle-step, (t(N) - t(1))/(N - 1)")
         ax = use(2, 1)
         for k, r in a["particles"].items():
             bp = r["bytesPerParticle"]
@@ -392,11 +372,7 @@ def chart(res, a, path):
             ax.semilogx(xm, [bp[str(n)] for n in xm], "s-", color=colour(k),
                         label=SHORT.get(k, k).replace("\n", " "))
         ax.set_ylim(bottom=0)
-        ax.set_xlabel("particles N")
-        ax.set_ylabel("bytes per particle")
-        ax.set_title("Memory per particle: peak RSS difference to N = 1", fontsize=10)
-        ax.legend(fontsize=8)
-        ax.grid(True, which="both", alpha=0.3)
+        against_particles(ax, "bytes per particle", "Memory per particle: peak RSS difference to N = 1")
     # the verdicts in words
     ax = use(2, 2)
     ax.axis("off")

@@ -23,44 +23,27 @@ import math
 import os
 import random
 import shutil
-import subprocess
+
+from riserfoam import cases
+from riserfoam import foamfields as ff
+from riserfoam.carrier import Riser
 
 # The riser of the tutorials (constant/riserProperties): D = 0.1 m,
 # u_cm = 1 m/s, A = 0.1 m, f = 3 Hz, phi0 = 0.
-D = 0.1
+RISER = Riser(D=0.1, u_cm=1.0, A=0.1, f=3.0, phi0=0.0)
+D = RISER.D
 R = 0.5 * D
-U_CENTRE = 1.0
-AMPLITUDE = 0.1
-FREQUENCY = 3.0
-OMEGA = 2.0 * math.pi * FREQUENCY
-RISER_SPEED0 = AMPLITUDE * OMEGA          # wall velocity at t = 0 (lab)
+RISER_SPEED0 = RISER.velocity(0.0)        # wall velocity at t = 0 (lab)
 
 # The particles: the tutorials' ore
 PARTICLE_D = 0.01
 PARTICLE_RHO = 2000.0
 
-HEADER = """FoamFile
-{
-    version     2.0;
-    format      ascii;
-    class       %s;
-    object      %s;
-}
-// written by benchmarks/riserCases.py
-"""
+NOTE = "written by benchmarks/riserCases.py"
 
 
-def header(cls, obj):
-    return HEADER % (cls, obj)
-
-
-def run(cmd, log, cwd=None):
-    """Run a command to a log file; raise with the log's tail on failure."""
-    with open(log, "w") as f:
-        r = subprocess.run(cmd, stdout=f, stderr=subprocess.STDOUT, cwd=cwd)
-    if r.returncode != 0:
-        tail = open(log).read()[-2000:]
-        raise RuntimeError("%s failed (%s):\n%s" % (" ".join(cmd), log, tail))
+def write_dictionary(path, body, cls="dictionary"):
+    ff.write_dictionary(path, body, cls, NOTE)
 
 
 # ---------------------------------------------------------------- the mesh
@@ -68,67 +51,27 @@ def run(cmd, log, cwd=None):
 def make_mesh(folder, length, n, nz):
     """The riser O-grid (cyclic ends) with blockMesh, and the cell and wall
     face centres (for the stock solvers' U field). Returns the cell count."""
-    riser_dir = os.environ["RISER_DIR"]
-    os.makedirs(os.path.join(folder, "system"), exist_ok=True)
     os.makedirs(os.path.join(folder, "constant"), exist_ok=True)
     write_system(folder, "icoUncoupledKinematicParcelFoam", steps=1, dt=1e-4,
                  write_at_end=False)
-    run([os.path.join(riser_dir, "bin", "riserMesh"), "-D", repr(D), "-L", repr(length),
-         "-n", str(n), "-nz", str(nz), "-ends", "cyclic", "-case", folder],
-        os.path.join(folder, "log.riserMesh"))
-    run(["blockMesh", "-case", folder], os.path.join(folder, "log.blockMesh"))
+    cases.riser_mesh(folder, D, length, n, nz, root=os.environ["RISER_DIR"])
     os.makedirs(os.path.join(folder, "0"), exist_ok=True)
-    run(["postProcess", "-func", "writeCellCentres", "-time", "0", "-case", folder],
-        os.path.join(folder, "log.writeCellCentres"))
-    return len(read_vectors(os.path.join(folder, "0", "C"), "internalField"))
-
-
-def read_vectors(path, entry):
-    """The nonuniform vector list of 'entry' (internalField or a patch's
-    value) in an ascii field file."""
-    text = open(path).read()
-    if entry != "internalField":
-        start = text.index("boundaryField")
-        text = text[text.index(entry, start):]
-    at = text.index("nonuniform List<vector>", text.index("internalField") if entry == "internalField" else 0)
-    body = text[at:]
-    n = int(body.split()[2])
-    first = body.index("(")
-    values = body[first + 1:].split(None, 3 * n)
-    out = []
-    for i in range(n):
-        out.append(tuple(float(values[3 * i + k].strip("()")) for k in range(3)))
-    return out
-
-
-def poiseuille(x, frame):
-    """The carrier at t = 0: Poiseuille about the axis x_c(0) = 0, plus the
-    riser's velocity in the lab frame."""
-    r2 = x[0] ** 2 + x[1] ** 2
-    ux = RISER_SPEED0 if frame == "lab" else 0.0
-    return (ux, 0.0, U_CENTRE * max(0.0, 1.0 - r2 / (R * R)))
+    cases.run(["postProcess", "-func", "writeCellCentres", "-time", "0", "-case", folder],
+              os.path.join(folder, "log.writeCellCentres"))
+    return len(ff.read_vectors(os.path.join(folder, "0", "C"), "internalField"))
 
 
 def write_U(case, mesh, frame):
     """0/U: the carrier at t = 0 on the cells, the wall's velocity on the
     wall. riserParcelFoam overwrites it at every step; the stock solvers
     keep it (on the moving mesh it moves with the cells)."""
-    centres = read_vectors(os.path.join(mesh, "0", "C"), "internalField")
+    centres = ff.read_vectors(os.path.join(mesh, "0", "C"), "internalField")
     wall = (RISER_SPEED0 if frame == "lab" else 0.0, 0.0, 0.0)
-    lines = [header("volVectorField", "U"),
-             "dimensions [0 1 -1 0 0 0 0];",
-             "internalField nonuniform List<vector> %d\n(" % len(centres)]
-    lines += ["(%.12g %.12g %.12g)" % poiseuille(c, frame) for c in centres]
-    lines += [");",
-              "boundaryField",
-              "{",
-              "    riserWall { type fixedValue; value uniform (%.12g %.12g %.12g); }" % wall,
-              "    bottom { type cyclic; }",
-              "    top { type cyclic; }",
-              "}"]
-    os.makedirs(os.path.join(case, "0"), exist_ok=True)
-    with open(os.path.join(case, "0", "U"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    ff.write_vector_field(
+        os.path.join(case, "0", "U"), centres,
+        {"riserWall": "type fixedValue; value uniform (%.12g %.12g %.12g);" % wall,
+         "bottom": "type cyclic;", "top": "type cyclic;"},
+        lambda x, y, z: RISER.carrier(x, y, z, 0.0, frame), precision=12, note=NOTE)
 
 
 # ------------------------------------------------------------ the particles
@@ -150,12 +93,12 @@ def positions(n, seed=1912, margin=0.005, length=0.5):
 
 
 def write_positions(case, n, length, extra=()):
-    lines = [header("vectorField", "kinematicCloudPositions"), "("]
+    lines = ["("]
     lines += ["(%.12g %.12g %.12g)" % p for p in positions(n, length=length)]
     lines += ["(%.12g %.12g %.12g)" % p for p in extra]
     lines.append(")")
-    with open(os.path.join(case, "constant", "kinematicCloudPositions"), "w") as f:
-        f.write("\n".join(lines) + "\n")
+    write_dictionary(os.path.join(case, "constant", "kinematicCloudPositions"),
+                     "\n".join(lines) + "\n", "vectorField")
 
 
 # --------------------------------------------------------------- the models
@@ -301,8 +244,7 @@ cloudFunctions {}
 
 
 def write_system(case, application, steps, dt, write_at_end):
-    os.makedirs(os.path.join(case, "system"), exist_ok=True)
-    control = header("dictionary", "controlDict") + """
+    write_dictionary(os.path.join(case, "system", "controlDict"), """
 application     %s;
 libs            ("libriserLagrangian.so");
 startFrom       startTime;
@@ -319,19 +261,15 @@ writeCompression off;
 timeFormat      general;
 timePrecision   10;
 runTimeModifiable no;
-""" % (application, steps * dt, dt, steps if write_at_end else 100000000)
-    with open(os.path.join(case, "system", "controlDict"), "w") as f:
-        f.write(control)
-    with open(os.path.join(case, "system", "fvSchemes"), "w") as f:
-        f.write(header("dictionary", "fvSchemes") + """
+""" % (application, steps * dt, dt, steps if write_at_end else 100000000))
+    write_dictionary(os.path.join(case, "system", "fvSchemes"), """
 ddtSchemes           { default Euler; }
 gradSchemes          { default Gauss linear; }
 divSchemes           { default none; }
 laplacianSchemes     { default none; }
 interpolationSchemes { default linear; }
 """)
-    with open(os.path.join(case, "system", "fvSolution"), "w") as f:
-        f.write(header("dictionary", "fvSolution") + "\nsolvers {}\nPIMPLE {}\n")
+    write_dictionary(os.path.join(case, "system", "fvSolution"), "\nsolvers {}\nPIMPLE {}\n")
 
 
 class Variant:
@@ -369,7 +307,7 @@ class Variant:
         collision = RISER_COLLISION if self.solver == "riser" else STOCK_COLLISION
         if self.collision == "pair":
             collision = STOCK_PAIR_COLLISION
-        return header("dictionary", "kinematicCloudProperties") + "\n" + CLOUD % {
+        return "\n" + CLOUD % {
             "rho": PARTICLE_RHO, "d": PARTICLE_D, "forces": forces,
             "collision": collision,
             # released with the riser's velocity in the lab, at rest
@@ -390,33 +328,27 @@ def make_case(case, variant, mesh, n, steps, dt, length, write_at_end=False, ext
     write_U(case, mesh, variant.frame)
     write_positions(case, n, length, extra)
     c = os.path.join(case, "constant")
-    with open(os.path.join(c, "kinematicCloudProperties"), "w") as f:
-        f.write(variant.cloud_properties())
-    with open(os.path.join(c, "g"), "w") as f:
-        f.write(header("uniformDimensionedVectorField", "g")
-                + "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.8);\n")
-    with open(os.path.join(c, "transportProperties"), "w") as f:
-        f.write(header("dictionary", "transportProperties")
-                + "rhoInf 1000;\ntransportModel Newtonian;\nnu 1e-06;\n")
-    with open(os.path.join(c, "turbulenceProperties"), "w") as f:
-        f.write(header("dictionary", "turbulenceProperties") + "simulationType laminar;\n")
+    write_dictionary(os.path.join(c, "kinematicCloudProperties"), variant.cloud_properties())
+    write_dictionary(os.path.join(c, "g"), "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.8);\n",
+                     "uniformDimensionedVectorField")
+    write_dictionary(os.path.join(c, "transportProperties"),
+                     "rhoInf 1000;\ntransportModel Newtonian;\nnu 1e-06;\n")
+    write_dictionary(os.path.join(c, "turbulenceProperties"), "simulationType laminar;\n")
     # the riser (read by riserParcelFoam and by the mesh motion riserOscillation)
-    with open(os.path.join(c, "riserProperties"), "w") as f:
-        f.write(header("dictionary", "riserProperties") + """
+    write_dictionary(os.path.join(c, "riserProperties"), """
 D           %g;
 uCentre     %g;
 A           %g;
 f           %g;
-phi0        0;
+phi0        %g;
 carrier     exact;
 frame       %s;
-""" % (D, U_CENTRE, AMPLITUDE, FREQUENCY, variant.frame))
+""" % (RISER.D, RISER.u_cm, RISER.A, RISER.f, RISER.phi0, variant.frame))
     if variant.frame == "lab":
         # the same solid-body motion for both solvers: riserOscillation
         # (libriserLagrangian, loaded through controlDict's libs), x_c(t)
         # of constant/riserProperties
-        with open(os.path.join(c, "dynamicMeshDict"), "w") as f:
-            f.write(header("dictionary", "dynamicMeshDict") + """
+        write_dictionary(os.path.join(c, "dynamicMeshDict"), """
 dynamicFvMesh           dynamicMotionSolverFvMesh;
 motionSolverLibs        (fvMotionSolvers);
 motionSolver            solidBody;

@@ -37,9 +37,9 @@ settling_case()
     g=$(entry constant/g value | tr -d '()' | awk '{print sqrt($1*$1 + $2*$2 + $3*$3)}')
     mu=$(awk -v a="$nu" -v b="$rhoF" 'BEGIN {printf "%.17g", a*b}')
 
-    # the one parcel's velocity: "1((ux uy uz))"
-    uz=$(sed -n 's/^1((\([^ ]*\) \([^ ]*\) \([^)]*\)))$/\3/p' \
-        "$endTime/lagrangian/kinematicCloud/U")
+    # the one parcel's vertical velocity
+    uz=$("$RISER_PYTHON" -c 'import sys; from riserfoam import foamfields
+print("%.17g" % foamfields.read_vectors(sys.argv[1])[0][2])' "$endTime/lagrangian/kinematicCloud/U")
     vt=$("$tools/terminalVelocity" "$d" "$rhoP" "$rhoF" "$mu" "$g" "$D" "$law")
     echo "d = $d m, rho_p = $rhoP kg/m^3, D = $D m, law $law:"
     echo "settling speed $uz m/s after $endTime s, terminal velocity of the balance $vt m/s"

@@ -3,27 +3,30 @@
 usage: plot.py <folder with the .dat files> <output png>
 SPDX-License-Identifier: GPL-3.0-or-later
 """
+import os
 import sys
 from collections import defaultdict
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-import numpy as np
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
+import numpy as np  # noqa: E402
+from riserfoam import tables  # noqa: E402
 
 folder, out = sys.argv[1:3]
 
 
-def rows(name):
-    return [l.split() for l in open("%s/%s" % (folder, name)) if l.strip() and l[0] != "#"]
+def table(name):
+    return tables.read(os.path.join(folder, name))
 
 
 fig, (a1, a2, a3) = plt.subplots(1, 3, figsize=(16, 4.8))
 
 cost = defaultdict(list)
-for method, window, n, ns, mem in rows("costPerStep.dat"):
-    label = "full history" if method == "fullHistory" else "window %s steps + tail" % window
-    cost[label].append((int(n), float(ns) * 1e-3, int(mem)))
+for r in table("costPerStep.dat"):
+    label = ("full history" if r["method"] == "fullHistory"
+             else "window %g steps + tail" % float(r["window"]))
+    cost[label].append((int(r["n"]), float(r["ns_per_step"]) * 1e-3, int(r["bytes_per_particle"])))
 for label, data in cost.items():
     n, us, mem = np.array(data).T
     a1.loglog(n, us, "o-", label="%s (%.1f kB/particle at 1e5)" % (label, mem[-1] / 1024))
@@ -34,14 +37,14 @@ a1.legend(fontsize=8)
 a1.grid(True, which="both", alpha=0.3)
 
 work = defaultdict(list)
-for method, tail, windowTime, h, cpu, err in rows("workPrecision.dat"):
-    if method == "fullHistory":
+for r in table("workPrecision.dat"):
+    if r["method"] == "fullHistory":
         label = "full history"
-    elif method == "noBasset":
+    elif r["method"] == "noBasset":
         label = "Basset dropped"
     else:
-        label = "window %g s + tail (%s)" % (float(windowTime), tail)
-    work[label].append((float(cpu), float(err), float(h)))
+        label = "window %g s + tail (%s)" % (float(r["windowTime"]), r["tail"])
+    work[label].append((float(r["cpu"]), float(r["maxRelError"]), float(r["h"])))
 for label, data in work.items():
     cpu, err, h = np.array(data).T
     style = "x--" if label == "Basset dropped" else "o-"
@@ -52,7 +55,10 @@ a2.set_title("settling from rest: h = 1e-2 .. 1e-4 s")
 a2.legend(fontsize=8)
 a2.grid(True, which="both", alpha=0.3)
 
-h, ratio, lagged, implicit = np.array(rows("stability.dat"), dtype=float).T
+stability = table("stability.dat")
+ratio = stability["h/hCrit"]
+lagged = stability["largest|v|/Vt_lagged"]
+implicit = stability["largest|v|/Vt_implicit"]
 a3.loglog(ratio, np.minimum(lagged, 1e30), "s-", label="newest weight lagged (explicit)")
 a3.loglog(ratio, implicit, "o-", label="newest weight implicit (library)")
 a3.axvline(1.0, color="k", lw=0.8, ls=":")

@@ -4,17 +4,17 @@ import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
+from riserfoam import tables  # noqa: E402
 
-rows = [[float(v) for v in line.split()] for line in open(sys.argv[1])
-        if line.strip() and not line.startswith("#")]
-size = [r[1] * 1000 for r in rows]
+errors = tables.read(sys.argv[1])
+size = errors["cellSize"] * 1000
 fig, ax = plt.subplots(figsize=(6.4, 4.4))
-for col, label, colour in ((2, "velocity u / u_cm", "C0"),
-                           (4, "vorticity / (2 u_cm / R)", "C1"),
-                           (6, "Du/Dt / (A omega^2)", "C2")):
-    ax.loglog(size, [r[col] for r in rows], "o-", color=colour, label=label + ", RMS")
-    ax.loglog(size, [r[col + 1] for r in rows], "s--", color=colour, ms=4, label="max")
+for quantity, label, colour in (("Velocity", "velocity u / u_cm", "C0"),
+                                ("Vorticity", "vorticity / (2 u_cm / R)", "C1"),
+                                ("MaterialDerivative", "Du/Dt / (A omega^2)", "C2")):
+    ax.loglog(size, errors["rms" + quantity], "o-", color=colour, label=label + ", RMS")
+    ax.loglog(size, errors["max" + quantity], "s--", color=colour, ms=4, label="max")
 ax.set_xlabel("mean cell size [mm]")
 ax.set_ylabel("scaled interpolation error")
 ax.set_title("Interpolated against exact carrier, riser D = 0.1 m, f = 3 Hz\n"

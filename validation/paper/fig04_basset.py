@@ -7,7 +7,7 @@ Claim: the Basset force barely matters for this particle.
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
-from paperFigures import D, UCM, RiserCase, claim, np, plt, quick, root, save, scratch
+from paperFigures import D, UCM, Riser, RiserCase, claim, np, plt, quick, root, save, scratch
 
 duration = 1.0 if quick else 2.0
 fig, ax = plt.subplots(2, 3, figsize=(15, 7))
@@ -20,11 +20,10 @@ for col, (f, start) in enumerate(((0.0, 0.3), (0.05, 0.2), (0.2, 0.2))):
         if basset:
             case.with_basset()
         runs[basset] = case.solver(cells=8).table("riserParcelFoam")[0]
-    omega = 2 * np.pi * f * UCM / D
+    riser = Riser(D, UCM, A=D if f > 0 else 0.0, f=f * UCM / D)
     for basset, style in ((False, "--"), (True, "-")):
         c = runs[basset]
-        ax[0, col].plot(c["t"] * UCM / D, (c["Urx"] + (D if f > 0 else 0) * omega *
-                                           np.cos(omega * c["t"])) / UCM, style,
+        ax[0, col].plot(c["t"] * UCM / D, (c["Urx"] + riser.velocity(c["t"])) / UCM, style,
                         label="with Basset" if basset else "without")
         ax[1, col].plot(c["t"] * UCM / D, c["Uz"] / UCM, style)
     ax[0, col].set_title("f = %g (release at %.1f D)" % (f, start))

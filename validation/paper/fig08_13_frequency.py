@@ -32,8 +32,10 @@ for f in fs:
     half = c["t"] >= duration / 2
     late[f] = (np.abs(c["Urx"][half]).max() / UCM, c["lift"][-1] / D, len(contacts))
     if len(contacts):
-        ax[1, 0].plot(np.full(len(contacts), f), contacts[:, 4] / 0.01, "o", ms=3, color="C%d" % fs.index(f))
-        ax[1, 1].plot(np.full(len(contacts), f), contacts[:, 5] / UCM, "o", ms=3, color="C%d" % fs.index(f))
+        ax[1, 0].plot(np.full(len(contacts), f), contacts["maxOverlap"] / 0.01, "o", ms=3,
+                      color="C%d" % fs.index(f))
+        ax[1, 1].plot(np.full(len(contacts), f), contacts["impactSpeed"] / UCM, "o", ms=3,
+                      color="C%d" % fs.index(f))
 for a, label in zip(ax[0], ("(v_px - U_r) / u_cm", "v_pz / u_cm", "lifting distance / D")):
     a.set_xlabel("t u_cm / D")
     a.set_ylabel(label)
@@ -54,7 +56,8 @@ ax[1, 2].legend(fontsize=8)
 ax[1, 2].grid(True, alpha=0.3)
 # inside the fourth contact at f = 0.3: the same run, rows every 0.2 us
 # around it only
-start, end = runs[0.3][1][3, 1:3]
+fourth = runs[0.3][1][3]
+start, end = fourth["start"], fourth["end"]
 inside = (RiserCase(root, scratch, "fig13_contact").riser(A=1.0, f=0.3)
           .run_for(end + 0.5 * (end - start), 2e-7).releases([(0.2, 0.2)])
           .engine_settings("writeFrom %r;" % (start - 0.5 * (end - start))).engine().table()[0])
@@ -88,7 +91,7 @@ claim("frequencyTrends", {"lateral": lat, "lift": lift},
 drops = []
 for f in fs:
     c, contacts = runs[f]
-    for start, end in contacts[:, 1:3]:
+    for start, end in zip(contacts["start"], contacts["end"]):
         before = np.searchsorted(c["t"], start) - 1
         after = np.searchsorted(c["t"], end)
         if before >= 0 and after < len(c["t"]):

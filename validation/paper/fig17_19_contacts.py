@@ -8,7 +8,8 @@ agree (largest relative position difference, lifting distance).
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
-from paperFigures import D, UCM, RiserCase, claim, np, phase_lag, plt, quick, root, save, scratch
+from paperFigures import (D, UCM, Riser, RiserCase, claim, np, phase_lag, plt, quick, root, save,
+                          scratch)
 
 d = 0.01
 fig = plt.figure(figsize=(18, 9))
@@ -19,17 +20,17 @@ for row, (f, periods) in enumerate(((0.05, 1 if quick else 2), (0.3, 2 if quick 
             .run_for(periods * T, 5e-4).releases([(0.2, 0.2)], d).engine().solver(cells=8))
     engine = case.table()[0]
     solver = case.table("riserParcelFoam")[0]
-    e = {k: v[1:] for k, v in engine.items()}      # the engine also writes the release
-    omega = 2 * np.pi * f * UCM / D
-    xc = 1.0 * D * np.sin(omega * e["t"])
+    e = engine[1:]                                  # the engine also writes the release
+    riser = Riser(D, UCM, A=1.0 * D, f=f * UCM / D)
+    xc = riser.axis(e["t"])
     wall = 0.5 * D - 0.5 * d
     axes = [fig.add_subplot(2, 4, 4 * row + k + 1) for k in range(3)]
     axes[0].plot(e["t"] / T, (xc + wall) / D, "k-", lw=0.8)
     axes[0].plot(e["t"] / T, (xc - wall) / D, "k-", lw=0.8, label="walls (centre's reach)")
     for c, style, name in ((e, "-", "riserParticle"), (solver, "--", "riserParcelFoam")):
         t = c["t"]
-        axes[0].plot(t / T, (c["xr"] + D * np.sin(omega * t)) / D, style, label=name)
-        axes[1].plot(t / T, (c["Urx"] + D * omega * np.cos(omega * t)) / UCM, style, label=name)
+        axes[0].plot(t / T, (c["xr"] + riser.axis(t)) / D, style, label=name)
+        axes[1].plot(t / T, (c["Urx"] + riser.velocity(t)) / UCM, style, label=name)
         axes[2].plot(t / T, c["Uz"] / UCM, style, label=name)
     for a, label in zip(axes, ("x / D (lab)", "v_px / u_cm (lab)", "v_pz / u_cm")):
         a.set_xlabel("t / T")
@@ -55,7 +56,7 @@ for row, (f, periods) in enumerate(((0.05, 1 if quick else 2), (0.3, 2 if quick 
           % (f, periods, contacts, gap, 100 * lift))
     # phase of the lateral velocity against the riser's, over the last period
     last = e["t"] >= (periods - 1) * T
-    Ur = D * omega * np.cos(omega * e["t"])
+    Ur = riser.velocity(e["t"])
     phases[f] = phase_lag(e["t"][last], (e["Urx"] + Ur)[last], Ur[last], f * UCM / D)
 fig.suptitle("without (f = 0.05) and with (f = 0.3) wall contacts, A = 1: both engines")
 save(fig, "paper_fig17_19_contacts.png")

@@ -1,21 +1,23 @@
 """What the paper-figure scripts share: where things go, the particle
-table's derived series, and the claims file each script adds its numbers to.
+table's derived series, and the claims file each script adds its numbers to
+(the cases, their tables and the riser come from the riserfoam package).
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 import json
 import os
-import sys
 
 import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
 import numpy as np  # noqa: E402
+from riserfoam.carrier import D, UCM, Riser  # noqa: E402,F401  (for the figure scripts)
+from riserfoam.cases import RiserCase  # noqa: E402,F401
 
 here = os.path.dirname(os.path.abspath(__file__))
 root = os.path.abspath(os.path.join(here, "../.."))
-sys.path.insert(0, os.path.join(here, "../common"))
-from riserCase import D, UCM, RiserCase  # noqa: E402,F401
+__all__ = ["D", "UCM", "Riser", "RiserCase", "np", "plt", "root", "scratch", "figures", "results",
+           "quick", "claim", "dominant_frequency", "phase_lag", "save"]
 
 # RISER_VALIDATION_OUT (the quick test's scratch folder) redirects the
 # figures, the claims and the cases away from the tree

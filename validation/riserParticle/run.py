@@ -12,12 +12,14 @@ import time
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-import numpy as np
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
+from matplotlib.colors import ListedColormap  # noqa: E402
+import numpy as np  # noqa: E402
+from riserfoam import tables  # noqa: E402
+from riserfoam.carrier import D, UCM  # noqa: E402
+from riserfoam.cases import RiserCase  # noqa: E402
 
 root, scratch, results, figures = sys.argv[1:5]
-sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "../common"))
-from riserCase import D, HEADER, UCM, RiserCase  # noqa: E402
 
 
 def make_case(name, A=None, f=None, endTime=None, deltaT=None):
@@ -29,35 +31,35 @@ def make_case(name, A=None, f=None, endTime=None, deltaT=None):
     return case
 
 
+def sweep(name, As, fs):
+    """riserParticle -sweep (20 periods per case) over the grid of A [m] and
+    f [Hz]: its rows (dicts by column name), kept in results/<name>.dat"""
+    case = make_case(name)
+    table = case.sweep(As, fs, periods=20, liftTime=10)
+    shutil.copy(table.path, os.path.join(results, name + ".dat"))
+    return list(table)
+
+
 # --- regime map -------------------------------------------------------------
 nA = nF = 40
 As = np.linspace(0.25, 2.0, nA) * D
 fs = np.linspace(0.025, 0.4, nF) * UCM / D
-case = make_case("regimeMap")
-open(os.path.join(case.path, "system/riserSweepDict"), "w").write(
-    HEADER % "riserSweepDict"
-    + "A (%s);\nf (%s);\nperiods 20;\nliftTime 10;\n"
-    % (" ".join("%.6g" % a for a in As), " ".join("%.6g" % f for f in fs)))
 start = time.time()
-case.engine("-sweep")
+rows = sweep("regimeMap", As, fs)
 wall = time.time() - start
-shutil.copy(os.path.join(case.path, "postProcessing/riserParticle/sweep.dat"),
-            os.path.join(results, "regimeMap.dat"))
-rows = [l.split() for l in open(os.path.join(results, "regimeMap.dat")) if l[0] != "#"]
 classes = ["noContact", "onceFirstPeriod", "firstPeriodsOnly", "other", "bothWallsEveryPeriod"]
 grid = np.full((nA, nF), -1)
 failed = 0
 for i, r in enumerate(rows):
-    if r[2] != "ok":
+    if r["status"] != "ok":
         failed += 1
         continue
-    grid[i // nF, i % nF] = classes.index(r[8])
+    grid[i // nF, i % nF] = classes.index(r["regime"])
 summary = ["regime map: %d x %d cases, 20 periods each, %.1f s wall time (riserParticle -sweep, "
            "default integrator), %d failed" % (nA, nF, wall, failed)]
 
 fig, ax = plt.subplots(figsize=(7.5, 6))
 colours = ["#dddddd", "#9ecae1", "#4292c6", "#fdae6b", "#d94801"]
-from matplotlib.colors import ListedColormap
 ax.pcolormesh(As / D, fs * D / UCM, np.ma.masked_less(grid, 0).T,
               cmap=ListedColormap(colours), vmin=-0.5, vmax=4.5, shading="nearest")
 # boundaries f (A - a0) = c between consecutive classes in the order above
@@ -92,30 +94,18 @@ fig.tight_layout()
 fig.savefig(os.path.join(figures, "regime_map.png"), dpi=110)
 
 # --- frequency and amplitude sweeps (the paper's Figs. 8-16) ----------------
-def sweep(name, As, fs):
-    case = make_case(name)
-    open(os.path.join(case.path, "system/riserSweepDict"), "w").write(
-        HEADER % "riserSweepDict"
-        + "A (%s);\nf (%s);\nperiods 20;\nliftTime 10;\n"
-        % (" ".join("%.6g" % a for a in As), " ".join("%.6g" % f for f in fs)))
-    case.engine("-sweep")
-    shutil.copy(os.path.join(case.path, "postProcessing/riserParticle/sweep.dat"),
-                os.path.join(results, name + ".dat"))
-    return [l.split() for l in open(os.path.join(results, name + ".dat")) if l[0] != "#"]
-
-
 freq = sweep("frequencySweep", [0.1], np.linspace(0.025, 0.4, 31) * UCM / D)
 amp = sweep("amplitudeSweep", np.linspace(0.5, 2.0, 31) * D, np.array([0.05, 0.3]) * UCM / D)
 fig, axes = plt.subplots(2, 3, figsize=(14, 7.5), sharex="col")
-quantities = ((3, "lifting distance after 10 s / D", D),
-              (4, "largest |v_px - U_r| / u_cm", UCM),
-              (5, "mean vertical speed / u_cm", UCM))
+quantities = (("lift", "lifting distance after 10 s / D", D),
+              ("maxRelativeLateralSpeed", "largest |v_px - U_r| / u_cm", UCM),
+              ("meanVerticalSpeed", "mean vertical speed / u_cm", UCM))
 for col, (k, label, scale) in enumerate(quantities):
     ax = axes[0, col]
-    ok = [r for r in freq if r[2] == "ok"]
-    ax.plot([float(r[1]) * D / UCM for r in ok], [float(r[k]) / scale for r in ok], "o-", ms=3)
-    contact = [r for r in ok if r[8] != "noContact"]
-    ax.plot([float(r[1]) * D / UCM for r in contact], [float(r[k]) / scale for r in contact], "o",
+    ok = [r for r in freq if r["status"] == "ok"]
+    ax.plot([float(r["f"]) * D / UCM for r in ok], [float(r[k]) / scale for r in ok], "o-", ms=3)
+    contact = [r for r in ok if r["regime"] != "noContact"]
+    ax.plot([float(r["f"]) * D / UCM for r in contact], [float(r[k]) / scale for r in contact], "o",
             ms=5, mfc="none", color="C3", label="with wall contacts")
     ax.set_xlabel("f D / u_cm (A = D)")
     ax.set_ylabel(label)
@@ -123,8 +113,8 @@ for col, (k, label, scale) in enumerate(quantities):
     ax.legend(fontsize=7)
     ax = axes[1, col]
     for fd, style in ((0.05, "s-"), (0.3, "o-")):
-        ok = [r for r in amp if r[2] == "ok" and abs(float(r[1]) * D / UCM - fd) < 1e-9]
-        ax.plot([float(r[0]) / D for r in ok], [float(r[k]) / scale for r in ok], style, ms=3,
+        ok = [r for r in amp if r["status"] == "ok" and abs(float(r["f"]) * D / UCM - fd) < 1e-9]
+        ax.plot([float(r["A"]) / D for r in ok], [float(r[k]) / scale for r in ok], style, ms=3,
                 label="f = %g" % fd)
     ax.set_xlabel("A / D")
     ax.set_ylabel(label)
@@ -135,14 +125,16 @@ fig.suptitle("frequency sweep (A = D, top) and amplitude sweeps (f = 0.05 and 0.
 fig.tight_layout()
 fig.savefig(os.path.join(figures, "sweeps.png"), dpi=110)
 for name, rs in (("frequency sweep (A = D)", freq), ("amplitude sweep", amp)):
-    failed = sum(r[2] != "ok" for r in rs)
+    failed = sum(r["status"] != "ok" for r in rs)
+    lifts = [float(r["lift"]) for r in rs if r["status"] == "ok"]
     summary.append("%s: %d cases, %d failed; lift after 10 s from %.3g D to %.3g D"
-                   % (name, len(rs), failed, max(float(r[3]) for r in rs if r[2] == "ok") / D,
-                      min(float(r[3]) for r in rs if r[2] == "ok") / D))
+                   % (name, len(rs), failed, max(lifts) / D, min(lifts) / D))
 
 # --- work-precision ---------------------------------------------------------
-def table(case):
-    return np.loadtxt(os.path.join(case.path, "postProcessing/riserParticle/particles.dat"))
+def trajectory(case):
+    """the engine's x - x_c, y and lifting distance, a row per table row"""
+    return tables.read(os.path.join(case.path, "postProcessing/riserParticle/particles.dat")) \
+        .matrix("xr", "yr", "lift")
 
 
 def cpu_of(log):
@@ -160,7 +152,7 @@ for scene, f, T in (("f005", 0.5, 4.0), ("f03", 3.0, 5 / 3.0)):
     # agree with it to 6e-9 D); with contacts, the adaptive scheme at 1e-12
     case.engine_settings("integrator paper; paperCoeffs { flowStep 1e-5; }" if f < 1 else
                          "integrator adaptive; adaptiveCoeffs { tolerance 1e-12; }").engine()
-    ref = table(case)
+    ref = trajectory(case)
     runs = [("adaptive", "tolerance %g" % tol,
              "integrator adaptive; adaptiveCoeffs { tolerance %g; }" % tol)
             for tol in (1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11)]
@@ -178,11 +170,11 @@ for scene, f, T in (("f005", 0.5, 4.0), ("f03", 3.0, 5 / 3.0)):
         cpu = cpu_of(log)
         for _ in range(2 if cpu < 0.5 else 0):
             cpu = min(cpu, cpu_of(case.engine_log()))
-        t = table(case)
+        t = trajectory(case)
         if t.shape != ref.shape:
             sys.exit("rows differ for %s %s" % (name, label))
-        traj = np.linalg.norm(t[:, [9, 10, 14]] - ref[:, [9, 10, 14]], axis=1).max() / D
-        lift = abs(t[-1, 14] - ref[-1, 14]) / D
+        traj = np.linalg.norm(t - ref, axis=1).max() / D
+        lift = abs(t[-1, 2] - ref[-1, 2]) / D
         wp.append((scene, name, label, cpu, traj, lift))
 with open(os.path.join(results, "workPrecision.dat"), "w") as out:
     out.write("# scene integrator setting cpu[s] trajectoryError/D liftError/D "

@@ -1,10 +1,9 @@
 """Chung & Ooi (2011) tests 2, 3 and 4 through riserWallContact; see run."""
 import math
 import os
-import subprocess
 import sys
 
-import wallContactCase as wc
+from riserfoam import cases
 
 failures = 0
 
@@ -19,11 +18,10 @@ def check(label, value, expected, tol):
 
 
 def run(case):
+    """blockMesh and the solver in case: nonzero if one failed"""
     for app in ("blockMesh", "icoUncoupledKinematicParcelFoam"):
-        with open(os.path.join(case, "log." + app), "w") as log:
-            rc = subprocess.call([app, "-case", case], stdout=log, stderr=subprocess.STDOUT)
-        if rc:
-            return rc
+        if cases.run([app, "-case", case], os.path.join(case, "log." + app), may_fail=True) is None:
+            return 1
     return 0
 
 
@@ -41,10 +39,10 @@ RIGID = 1e30   # wall modulus: rigid to double precision
 
 # --- test 2 ---------------------------------------------------------------
 R, rho, E, nu, v = 0.1, 2699.0, 70e9, 0.3, 0.2
-wc.make_case("test2", D=1.0, radius=R, rho=rho, E=E, nu=nu, wall_E=RIGID, wall_nu=0.3,
-             e_n=1.0, e_t=1.0, mu=0.0, velocities=[(v, 0.0)], dt=1e-4, end=2e-3)
+cases.wall_contact_case("test2", D=1.0, radius=R, rho=rho, E=E, nu=nu, wall_E=RIGID, wall_nu=0.3,
+                        e_n=1.0, e_t=1.0, mu=0.0, velocities=[(v, 0.0)], dt=1e-4, end=2e-3)
 must_run("test2")
-c = wc.read_contacts("test2")[0]
+c = cases.wall_contacts("test2")[0]
 m = rho * 4.0 / 3.0 * math.pi * R ** 3
 Es = E / (1 - nu ** 2)
 delta = (15 * m * v ** 2 / (16 * Es * math.sqrt(R))) ** 0.4
@@ -59,13 +57,13 @@ R, rho, E, nu, v = 2.5e-3, 4000.0, 380e9, 0.23, 3.9
 print("test 3")
 for e in (0.2, 0.4, 0.6, 0.8, 1.0):
     case = "test3_e%g" % e
-    wc.make_case(case, D=0.1, radius=R, rho=rho, E=E, nu=nu, wall_E=RIGID, wall_nu=0.3,
-                 e_n=e, e_t=1.0, mu=0.0, velocities=[(v, 0.0)], end=1e-4)
+    cases.wall_contact_case(case, D=0.1, radius=R, rho=rho, E=E, nu=nu, wall_E=RIGID, wall_nu=0.3,
+                            e_n=e, e_t=1.0, mu=0.0, velocities=[(v, 0.0)], end=1e-4)
     must_run(case)
-    c = wc.read_contacts(case)[0]
+    c = cases.wall_contacts(case)[0]
     check("  restitution, input e = %g" % e, -c["Uout_x"] / c["Uin_x"], e, 0.01)
-wc.make_case("test3_e0", D=0.1, radius=R, rho=rho, E=E, nu=nu, wall_E=RIGID, wall_nu=0.3,
-             e_n=0.0, e_t=1.0, mu=0.0, velocities=[(v, 0.0)], end=1e-4)
+cases.wall_contact_case("test3_e0", D=0.1, radius=R, rho=rho, E=E, nu=nu, wall_E=RIGID, wall_nu=0.3,
+                        e_n=0.0, e_t=1.0, mu=0.0, velocities=[(v, 0.0)], end=1e-4)
 rc = run("test3_e0")
 log = open("test3_e0/log.icoUncoupledKinematicParcelFoam").read()
 rejected = rc != 0 and "entry 'normalRestitution' = 0 is outside the allowed range (0, 1]" in log
@@ -76,10 +74,10 @@ print("  e = 0 rejected with an error naming normalRestitution: %s" % ("ok" if r
 e, mu = 0.98, 0.092
 angles = list(range(5, 90, 5))
 vel = [(v * math.cos(math.radians(a)), v * math.sin(math.radians(a))) for a in angles]
-wc.make_case("test4", D=0.1, radius=R, rho=rho, E=E, nu=nu, wall_E=70e9, wall_nu=0.33,
-             e_n=e, e_t=1.0, mu=mu, velocities=vel, rotation=True, end=1.5e-4)
+cases.wall_contact_case("test4", D=0.1, radius=R, rho=rho, E=E, nu=nu, wall_E=70e9, wall_nu=0.33,
+                        e_n=e, e_t=1.0, mu=mu, velocities=vel, rotation=True, end=1.5e-4)
 must_run("test4")
-contacts = wc.read_contacts("test4")
+contacts = cases.wall_contacts("test4")
 print("test 4 (gross sliding: Maw, Barber & Fawcett 1976; Chung & Ooi 2011, eqs. for test 4)")
 results = []
 for a, (vn, vt) in zip(angles, vel):

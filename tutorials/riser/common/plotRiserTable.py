@@ -21,18 +21,10 @@ import sys
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
-
-
-def read_table(path):
-    names, rows = None, []
-    for line in open(path):
-        if line.startswith("# t "):
-            names = line[2:].split()
-        elif line.strip() and not line.startswith("#"):
-            rows.append([float(v) for v in line.split()])
-    columns = {n: [r[i] for r in rows] for i, n in enumerate(names)}
-    return columns
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
+import numpy as np  # noqa: E402
+from riserfoam import tables  # noqa: E402
+from riserfoam.carrier import Riser  # noqa: E402
 
 
 def main():
@@ -40,23 +32,21 @@ def main():
     title = sys.argv[8] if len(sys.argv) > 8 else ""
     D, ucm, A, f, phi0 = map(float, (D, ucm, A, f, phi0))
     T = D / ucm
-    c = read_table(path)
-    t = [v / T for v in c["t"]]
-    w = 2 * math.pi * f
-    xc = [A * math.sin(w * tt * T + phi0) / D for tt in t]
-    particles = sorted(set(zip(c["origProc"], c["origId"])))
+    table = tables.read(path)
+    times = np.unique(table["t"])
+    xc = Riser(D, ucm, A, f, phi0).axis(times) / D
+    particles = table.group_by("origProc", "origId")
 
     fig, ax = plt.subplots(2, 2, figsize=(11, 7), sharex=True)
-    ax[0][0].plot(t, [x + 0.5 for x in xc], "k-", lw=0.8, label="riser walls")
-    ax[0][0].plot(t, [x - 0.5 for x in xc], "k-", lw=0.8)
-    for key in particles:
-        sel = [i for i in range(len(t)) if (c["origProc"][i], c["origId"][i]) == key]
-        ts = [t[i] for i in sel]
-        lab = "particle %d" % key[1]
-        ax[0][0].plot(ts, [c["x"][i] / D for i in sel], label=lab)
-        ax[0][1].plot(ts, [c["Urx"][i] / ucm for i in sel], label=lab)
-        ax[1][0].plot(ts, [c["Uz"][i] / ucm for i in sel], label=lab)
-        ax[1][1].plot(ts, [c["lift"][i] / D for i in sel], label=lab)
+    ax[0][0].plot(times / T, xc + 0.5, "k-", lw=0.8, label="riser walls")
+    ax[0][0].plot(times / T, xc - 0.5, "k-", lw=0.8)
+    for (proc, pid), c in particles.items():
+        ts = c["t"] / T
+        lab = "particle %d" % pid
+        ax[0][0].plot(ts, c["x"] / D, label=lab)
+        ax[0][1].plot(ts, c["Urx"] / ucm, label=lab)
+        ax[1][0].plot(ts, c["Uz"] / ucm, label=lab)
+        ax[1][1].plot(ts, c["lift"] / D, label=lab)
     ax[0][0].set_ylabel("lateral position x_p / D")
     ax[0][1].set_ylabel("relative lateral velocity (v_px - U_r) / u_cm")
     ax[1][0].set_ylabel("vertical velocity v_pz / u_cm")
@@ -73,7 +63,7 @@ def main():
 
     fig = plt.figure(figsize=(5.5, 7))
     ax3 = fig.add_subplot(projection="3d")
-    zmax = max(c["lift"]) / D
+    zmax = table["lift"].max() / D
     theta = [2 * math.pi * k / 60 for k in range(61)]
     for frac in (0.0, 0.5, 1.0):
         ax3.plot([0.5 * math.cos(a) for a in theta], [0.5 * math.sin(a) for a in theta],
@@ -81,10 +71,8 @@ def main():
     for a in theta[::6]:
         ax3.plot([0.5 * math.cos(a)] * 2, [0.5 * math.sin(a)] * 2, [0, zmax],
                  color="grey", lw=0.4, alpha=0.6)
-    for key in particles:
-        sel = [i for i in range(len(t)) if (c["origProc"][i], c["origId"][i]) == key]
-        ax3.plot([c["xr"][i] / D for i in sel], [c["yr"][i] / D for i in sel],
-                 [c["lift"][i] / D for i in sel], lw=1.2)
+    for c in particles.values():
+        ax3.plot(c["xr"] / D, c["yr"] / D, c["lift"] / D, lw=1.2)
     ax3.set_xlabel("(x - x_c) / D")
     ax3.set_ylabel("y / D")
     ax3.set_zlabel("lifting distance / D")
@@ -97,21 +85,16 @@ def main():
     contacts_path = os.path.join(os.path.dirname(os.path.dirname(path)),
                                  "riserWallContact", "contacts.dat")
     if os.path.exists(contacts_path):
-        names, rows = None, []
-        for line in open(contacts_path):
-            if line.startswith("# origProc"):
-                names = line[2:].split()
-            elif line.strip() and not line.startswith("#"):
-                rows.append(dict(zip(names, (float(v) for v in line.split()))))
-        if rows:
-            tc = [r["tStart"] / T for r in rows]
+        contacts = tables.read(contacts_path)
+        if len(contacts):
+            tc = contacts["tStart"] / T
             fig, ax = plt.subplots(1, 3, figsize=(13, 3.6))
-            ax[0].plot(tc, [r["overlapMax"] * 1e6 for r in rows], "o")
-            ax[1].plot(tc, [r["normalForceMax"] for r in rows], "o", color="C1")
-            ax[2].plot(tc, [r["Uin_x"] / ucm for r in rows], "v", label="before")
-            ax[2].plot(tc, [r["Uout_x"] / ucm for r in rows], "^", label="after")
-            ax[2].plot(tc, [r["Uin_z"] / ucm for r in rows], "s", ms=3, label="vertical before")
-            ax[2].plot(tc, [r["Uout_z"] / ucm for r in rows], "d", ms=3, label="vertical after")
+            ax[0].plot(tc, contacts["overlapMax"] * 1e6, "o")
+            ax[1].plot(tc, contacts["normalForceMax"], "o", color="C1")
+            ax[2].plot(tc, contacts["Uin_x"] / ucm, "v", label="before")
+            ax[2].plot(tc, contacts["Uout_x"] / ucm, "^", label="after")
+            ax[2].plot(tc, contacts["Uin_z"] / ucm, "s", ms=3, label="vertical before")
+            ax[2].plot(tc, contacts["Uout_z"] / ucm, "d", ms=3, label="vertical after")
             ax[0].set_ylabel("largest overlap delta_n [um]")
             ax[1].set_ylabel("largest normal force [N]")
             ax[2].set_ylabel("velocity relative to the wall / u_cm")
@@ -119,7 +102,7 @@ def main():
             for a in ax:
                 a.set_xlabel("contact start, t u_cm / D")
                 a.grid(alpha=0.3)
-            fig.suptitle(title + " - %d wall contacts" % len(rows))
+            fig.suptitle(title + " - %d wall contacts" % len(contacts))
             fig.tight_layout()
             fig.savefig(prefix + "_contacts.png", dpi=110)
             print("wrote", prefix + "_contacts.png")

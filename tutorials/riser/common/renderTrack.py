@@ -12,16 +12,12 @@ import sys
 from paraview.simple import (Calculator, GetActiveViewOrCreate, GetColorTransferFunction,
                              GetScalarBar, OpenFOAMReader, PolyLineSource, Render,
                              SaveScreenshot, Show, Transform, Tube)
+from riserfoam import tables
 
 foam, table, png = sys.argv[1:4]
 
-# the track: t, x - x_c, y and the unwrapped height (columns of the table)
-rows = []
-for line in open(table):
-    if line.startswith("#"):
-        continue
-    c = line.split()
-    rows.append((float(c[0]), float(c[9]), float(c[10]), float(c[5]), float(c[14])))
+# the track: t, x - x_c, y, z and the lifting distance (columns of the table)
+rows = [tuple(r) for r in tables.read(table).matrix("t", "xr", "yr", "z", "lift").tolist()]
 if not rows:
     sys.exit("renderTrack: no rows in " + table)
 z0 = rows[0][3] - rows[0][4]

@@ -2,11 +2,11 @@
 """Settling speed of the glass bead against time, from the lagrangian
 velocity the solver writes at each write time."""
 import os
-import re
 
 import matplotlib
 matplotlib.use("Agg")
-import matplotlib.pyplot as plt
+import matplotlib.pyplot as plt  # noqa: E402  (after the backend)
+from riserfoam import foamfields  # noqa: E402
 
 
 def parcel_velocity(time_dir):
@@ -14,8 +14,8 @@ def parcel_velocity(time_dir):
     path = os.path.join(time_dir, "lagrangian", "kinematicCloud", "U")
     if not os.path.exists(path):
         return None
-    match = re.search(r"\(\(\S+ \S+ (\S+)\)\)", open(path).read())
-    return float(match.group(1)) if match else None
+    velocities = foamfields.read_vectors(path)
+    return velocities[0][2] if velocities else None
 
 
 times, speeds = [0.0], [0.0]   # released from rest

@@ -1,0 +1,328 @@
+"""Case setup: commands run to a log, a tutorial copied to a scratch folder
+and edited (RiserCase: the riser, the run length, the releases, the forces;
+run by the mesh-free engine riserParticle or the solver riserParcelFoam,
+its tables read back), the riser O-grid (bin/riserMesh + blockMesh), and the
+wall-contact cases of the tests (particles thrown at a static riser wall,
+no fluid forces).
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+import os
+import shutil
+import subprocess
+
+import numpy as np
+
+from . import foamfields as ff
+from . import tables
+from .carrier import D, UCM, Riser
+
+# the repository (this file is python/riserfoam/cases.py)
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+
+
+class CaseError(RuntimeError):
+    """A command of a case failed."""
+
+
+def run(command, log, cwd=None, may_fail=False):
+    """Run command (a list) with its output to the file log. Returns the
+    log's text; when the command fails, None if may_fail, else CaseError
+    with the log's tail."""
+    with open(log, "w") as out:
+        done = subprocess.run(command, cwd=cwd, stdout=out, stderr=subprocess.STDOUT)
+    text = open(log).read()
+    if done.returncode != 0:
+        if may_fail:
+            return None
+        raise CaseError("%s failed (%s):\n%s" % (" ".join(command), log, text[-2000:]))
+    return text
+
+
+def copy_tutorial(tutorial, case, root=ROOT):
+    """A fresh copy of the tutorial (a folder under tutorials/, e.g.
+    'riser/oscillatingNoContact') in case: its 0, constant and system,
+    without a mesh (polyMesh, blockMeshDict)."""
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(case)
+    source = os.path.join(root, "tutorials", tutorial)
+    for sub in ("0", "constant", "system"):
+        shutil.copytree(os.path.join(source, sub), os.path.join(case, sub),
+                        ignore=shutil.ignore_patterns("polyMesh", "blockMeshDict"))
+
+
+def riser_mesh(case, D, L, n, nz=None, ends="cyclic", root=ROOT):
+    """The riser O-grid in case: bin/riserMesh (diameter D, length L [m],
+    n cells across the core, nz along the riser) and blockMesh."""
+    command = [os.path.join(root, "bin", "riserMesh"), "-D", repr(D), "-L", repr(L), "-n", str(n)]
+    if nz:
+        command += ["-nz", str(nz)]
+    run(command + ["-ends", ends, "-case", case], os.path.join(case, "log.riserMesh"))
+    run(["blockMesh", "-case", case], os.path.join(case, "log.blockMesh"))
+
+
+# ------------------------------------------------- a tutorial, edited
+
+class RiserCase:
+    """A copy of a riser tutorial in scratch/name, in the paper's units
+    (length D, velocity u_cm: carrier.D, carrier.UCM)."""
+
+    def __init__(self, root, scratch, name, tutorial="oscillatingNoContact"):
+        self.root = root
+        self.path = os.path.join(scratch, name)
+        copy_tutorial(os.path.join("riser", tutorial), self.path, root)
+
+    def _file(self, relative):
+        return os.path.join(self.path, relative)
+
+    def riser(self, A=None, f=None, phi0=None):
+        """amplitude [D], frequency [u_cm/D], phase (the paper's units)"""
+        props = self._file("constant/riserProperties")
+        if A is not None:
+            ff.set_entry(props, "A", "[0 1 0 0 0 0 0] %r" % (A * D))
+        if f is not None:
+            ff.set_entry(props, "f", "[0 0 -1 0 0 0 0] %r" % (f * UCM / D))
+        if phi0 is not None:
+            ff.set_entry(props, "phi0", "%r" % phi0)
+        return self
+
+    def run_for(self, endTime, deltaT=None):
+        """endTime and deltaT [s] (deltaT: the table's row interval)"""
+        control = self._file("system/controlDict")
+        ff.set_entry(control, "endTime", "%r" % endTime)
+        ff.set_entry(control, "writeInterval", "%r" % endTime)
+        if deltaT is not None:
+            ff.set_entry(control, "deltaT", "%r" % deltaT)
+        return self
+
+    def releases(self, points, d=0.01):
+        """one particle per (x, y) [D] at z = 0.5 D, released with the local
+        carrier speed relative to the riser (the tutorials' riser frame)"""
+        riser = Riser(D, UCM)
+        blocks = []
+        for i, (x, y) in enumerate(points):
+            name = "kinematicCloudPositions%d" % i
+            ff.write_dictionary(self._file("constant/" + name),
+                                "((%r %r %r))\n" % (x * D, y * D, 0.5 * D), "vectorField")
+            blocks.append(
+                "        release%d\n        {\n"
+                "            type manualInjection; massTotal 0; parcelBasisType fixed;\n"
+                "            nParticle 1; SOI 0; positionsFile \"%s\";\n"
+                "            U0 (0 0 %r);\n"
+                "            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }\n"
+                "        }\n" % (i, name, riser.speed(np.hypot(x, y) * D), d))
+        ff.replace_block(self._file("constant/kinematicCloudProperties"), "injectionModels",
+                         "".join(blocks))
+        return self
+
+    def without_force(self, name):
+        """drop a particle force (a line 'name;' or a block 'name { ... }')"""
+        props = self._file("constant/kinematicCloudProperties")
+        try:
+            ff.edit(props, r"^\s*%s\s*\{[^}]*\}\n" % name, "")
+        except ValueError:
+            ff.edit(props, r"^\s*%s;.*\n" % name, "")
+        return self
+
+    def with_basset(self, windowTime=0.01):
+        props = self._file("constant/kinematicCloudProperties")
+        if "riserBasset" not in open(props).read():
+            ff.edit(props, r"^(\s*)riserFluidStress;",
+                    r"\1riserBasset { coefficient michaelidesRoig; method windowTail; "
+                    r"windowTime %r; }\n\1riserFluidStress;" % windowTime)
+        return self
+
+    def engine_settings(self, text):
+        """system/riserParticleDict's entries (integrator, writeFrom, ...)"""
+        ff.write_dictionary(self._file("system/riserParticleDict"), text + "\n")
+        return self
+
+    def engine(self, *args):
+        """run riserParticle; returns self"""
+        self.engine_log(*args)
+        return self
+
+    def engine_log(self, *args, may_fail=False):
+        """run riserParticle; its log, or None if a particle's integration
+        failed (a step too large) and may_fail"""
+        log = run(["riserParticle", "-case", self.path] + list(args),
+                  self._file("log.riserParticle"), cwd=self.path, may_fail=True)
+        if log is None:
+            text = open(self._file("log.riserParticle")).read()
+            if not (may_fail and "failed: " in text):
+                raise CaseError("riserParticle failed in %s:\n%s" % (self.path, text[-2000:]))
+        return log
+
+    def solver(self, cells=12, length=2.0):
+        """mesh (O-grid, cyclic ends, length [D]) and run riserParcelFoam"""
+        riser_mesh(self.path, D, length * D, cells, root=self.root)
+        run(["riserParcelFoam", "-case", self.path], self._file("log.riserParcelFoam"),
+            cwd=self.path)
+        return self
+
+    def sweep(self, As, fs, periods=20, liftTime=10):
+        """riserParticle -sweep over the (A [m], f [Hz]) grid: sweep.dat's table"""
+        ff.write_dictionary(self._file("system/riserSweepDict"),
+                            "A (%s);\nf (%s);\nperiods %d;\nliftTime %g;\n"
+                            % (" ".join("%.6g" % a for a in As), " ".join("%.6g" % f for f in fs),
+                               periods, liftTime))
+        self.engine("-sweep")
+        return tables.read(self._file("postProcessing/riserParticle/sweep.dat"))
+
+    def table(self, engine="riserParticle"):
+        """{origId: Table of its rows}, the engine's or the solver's particle table"""
+        name = ("postProcessing/riserParticle/particles.dat" if engine == "riserParticle" else
+                "postProcessing/lagrangian/kinematicCloud/riserParticleTable/particles.dat")
+        return tables.read(self._file(name)).group_by("origId")
+
+    def contacts(self):
+        """the engine's contacts (Table: origId start end side maxOverlap ...)"""
+        return tables.read(self._file("postProcessing/riserParticle/contacts.dat"))
+
+    def budget(self):
+        """riserParticle -budget's rows: {force: (rms/W, max/W, lift change/D,
+        trajectory change/D, cpu ratio)} (None where not dropped)"""
+        self.engine("-budget")
+        return {r["force"]: tuple(_number(r[k]) for k in (
+                    "rms/W", "max/W", "dropped:liftChange/D", "dropped:largestTrajectoryChange/D",
+                    "dropped:cpu/full"))
+                for r in tables.read(self._file("postProcessing/riserParticle/budget.dat"))}
+
+
+def _number(field):
+    """a table's field as a float, None for '-' (not computed) and 'failed'"""
+    return None if field in ("-", "failed") else float(field)
+
+
+# ------------------------------------------------- wall-contact test cases
+
+def wall_contact_case(case, D, radius, rho, E, nu, wall_E, wall_nu, e_n, e_t, mu,
+                      velocities, rotation=False, dt=1e-5, end=2e-4,
+                      steps_per_contact=400, normal_force="tensionAllowed", positions=None):
+    """A case in which particles fly at the riser wall of the riserWallContact
+    model with no fluid forces (the sphere-wall benchmarks of Chung & Ooi
+    2011 through the OpenFOAM wall model), run by icoUncoupledKinematicParcelFoam.
+
+    The mesh is a box around a static riser of diameter D (the analytic
+    wall, not the box, is what the particles hit); each particle starts
+    three flow steps of its own normal motion away from the wall on the +x
+    side, at its own height, with its own velocity (one manual injector per
+    particle). The injection moves a parcel through the whole first step
+    before the collision model sees it, so a smaller gap would start the
+    contact already overlapped.
+
+    velocities: list of (v_x, v_z) pairs, v_x towards the wall (> 0);
+    positions: list of (x, y, z) to use instead of the default starts."""
+    R = 0.5 * D
+    half = 0.6 * D
+    height = 0.4 * D * max(len(velocities), 1) + 4 * radius
+    ff.write_dictionary(case + "/system/blockMeshDict", """
+vertices
+(
+    (%(a)g %(a)g 0) (%(b)g %(a)g 0) (%(b)g %(b)g 0) (%(a)g %(b)g 0)
+    (%(a)g %(a)g %(h)g) (%(b)g %(a)g %(h)g) (%(b)g %(b)g %(h)g) (%(a)g %(b)g %(h)g)
+);
+blocks ( hex (0 1 2 3 4 5 6 7) (6 6 %(nz)d) simpleGrading (1 1 1) );
+boundary
+(
+    walls { type wall; faces ( (0 3 2 1) (4 5 6 7) (0 1 5 4) (1 2 6 5) (2 3 7 6) (3 0 4 7) ); }
+);
+""" % {"a": -half, "b": half, "h": height, "nz": max(6, 3 * len(velocities))})
+    ff.write_dictionary(case + "/system/controlDict", """
+application     icoUncoupledKinematicParcelFoam;
+libs            ("libriserLagrangian.so");
+startFrom       startTime;
+startTime       0;
+stopAt          endTime;
+endTime         %g;
+deltaT          %g;
+writeControl    runTime;
+writeInterval   %g;
+writeFormat     ascii;
+writePrecision  15;
+timeFormat      general;
+timePrecision   8;
+runTimeModifiable no;
+""" % (end, dt, end))
+    ff.write_dictionary(case + "/system/fvSchemes", """
+ddtSchemes { default none; } gradSchemes { default none; } divSchemes { default none; }
+laplacianSchemes { default none; } interpolationSchemes { default linear; }
+""")
+    ff.write_dictionary(case + "/system/fvSolution", "solvers {}\n")
+    ff.write_dictionary(case + "/0/U", """
+dimensions [0 1 -1 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField { walls { type noSlip; } }
+""", "volVectorField")
+    ff.write_dictionary(case + "/constant/transportProperties",
+                        "rhoInf 1000;\ntransportModel Newtonian;\nnu 1e-06;\n")
+    ff.write_dictionary(case + "/constant/turbulenceProperties", "simulationType laminar;\n")
+    ff.write_dictionary(case + "/constant/g", "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 0);\n",
+                        "uniformDimensionedVectorField")
+    ff.write_dictionary(case + "/constant/riserProperties",
+                        "D %.17g;\nuCentre 0;\nA 0;\nf 0;\ncarrier exact;\n" % D)
+    injectors = []
+    for i, (vx, vz) in enumerate(velocities):
+        start = (R - radius - 3 * dt * vx, 0.0, 0.4 * D * i + 2 * radius)
+        if positions:
+            start = positions[i]
+        ff.write_dictionary(case + "/constant/positions%d" % i,
+                            "((%.17g %.17g %.17g))\n" % start, "vectorField")
+        injectors.append("""
+        p%(i)d
+        {
+            type            manualInjection;
+            massTotal       0;
+            parcelBasisType fixed;
+            nParticle       1;
+            SOI             0;
+            positionsFile   "positions%(i)d";
+            U0              (%(vx).17g 0 %(vz).17g);
+            sizeDistribution
+            {
+                type        fixedValue;
+                fixedValueDistribution { value %(d).17g; }
+            }
+        }""" % {"i": i, "vx": vx, "vz": vz, "d": 2 * radius})
+    ff.write_dictionary(case + "/constant/kinematicCloudProperties", """
+solution
+{
+    active true; coupled false; transient yes; cellValueSourceCorrection off; maxCo 0.3;
+    interpolationSchemes { rho cell; U cellPoint; mu cell; }
+    integrationSchemes { U Euler; }
+}
+constantProperties { rho0 %(rho).17g; youngsModulus %(E).17g; poissonsRatio %(nu).17g; }
+subModels
+{
+    particleForces {}
+    injectionModels
+    {%(inj)s
+    }
+    dispersionModel none;
+    patchInteractionModel standardWallInteraction;
+    standardWallInteractionCoeffs { type rebound; }
+    surfaceFilmModel none;
+    stochasticCollisionModel none;
+    collisionModel riserWallContact;
+    riserWallContactCoeffs
+    {
+        wall { youngsModulus %(wE).17g; poissonsRatio %(wnu).17g; }
+        normalRestitution %(en).17g;
+        tangentialRestitution %(et).17g;
+        friction %(mu).17g;
+        normalForce %(nf)s;
+        rotation %(rot)s;
+        stepsPerContact %(spc)d;
+    }
+}
+cloudFunctions {}
+""" % {"rho": rho, "E": E, "nu": nu, "inj": "".join(injectors), "wE": wall_E, "wnu": wall_nu,
+       "en": e_n, "et": e_t, "mu": mu, "nf": normal_force, "rot": "on" if rotation else "off",
+       "spc": steps_per_contact})
+
+
+def wall_contacts(case):
+    """riserWallContact's completed contacts in case, in the order they
+    ended (Table: origProc origId tStart tEnd duration overlapMax ...)"""
+    return tables.read(os.path.join(case, "postProcessing/lagrangian/kinematicCloud/"
+                                    "riserWallContact/contacts.dat"))
