@@ -177,6 +177,75 @@ TEST(HertzMindlin, TangentialStickAndSlide)
     EXPECT_EQ(law.force(b, 0.0, n, Vector(1, 1, 1), large).normal.norm(), 0.0);
 }
 
+// The Coulomb limit bounds the whole tangential force, spring and dashpot
+// together: at every sub-step of oblique impacts over the range of Chung &
+// Ooi (2011) test 4 (aluminium-oxide sphere, R = 2.5 mm, on an aluminium-
+// alloy plane, 3.9 m/s at 5..85 degrees from the normal, mu_c = 0.092,
+// e_n = 0.98), with e_t in {0.05, 0.7, 1} and the particle rotating,
+// |F_t| <= mu_c |F_n| to 1e-12 relative (the round-off of the rescaling).
+// The impacts are integrated by the test (symplectic Euler, 2000 steps per
+// contact time, the tangential spring accumulated as riserWallContact
+// does); the law supplies the forces. The test also checks that the cap is
+// reached (some sub-steps slide) and that the dashpot alone, which the
+// earlier spring-only cap left unbounded, would exceed it at e_t = 0.05.
+TEST(HertzMindlin, CoulombLimitBoundsTheTotalTangentialForce)
+{
+    const double R = 2.5e-3, rho = 4000.0, mu = 0.092, v = 3.9;
+    const double m = rho*4.0/3.0*M_PI*R*R*R, I = 0.4*m*R*R;
+    const ContactBody body(R, m);
+    const Vector n(0, 0, -1);                   // from the centre towards the wall
+    for (double et : {0.05, 0.7, 1.0})
+    {
+        const HertzMindlinParameters p{ElasticMaterial(380e9, 0.23), ElasticMaterial(70e9, 0.33),
+            0.98, et, mu, NormalForceFloor::tensionAllowed};
+        const HertzMindlin law(p);
+        const double dt = law.contactTime(body, v)/2000.0;
+        long slid = 0, steps = 0;
+        double worst = 0.0, dashpotOverLimit = 0.0;
+        for (double angle = 5.0; angle <= 85.0; angle += 5.0)
+        {
+            const double a = angle*M_PI/180.0;
+            Vector x(0, 0, R), vel(v*std::sin(a), 0, -v*std::cos(a)), omega = Vector::Zero();
+            Vector spring = Vector::Zero();
+            x.z() = R - 1e-12;                  // touching
+            for (int i = 0; i < 10000; ++i)
+            {
+                const double delta = R - x.z();
+                if (delta <= 0.0 && i > 0) break;
+                const Vector U = vel + omega.cross(R*n);
+                const Vector Ut = U - U.dot(n)*n;
+                spring += Ut*dt;
+                const ContactForce c = law.force(body, std::max(delta, 0.0), n, U, spring);
+                spring = c.springAfter;
+                const double Fn = c.normal.norm(), Ft = c.tangential.norm();
+                if (Fn > 0.0)
+                {
+                    worst = std::max(worst, Ft/(mu*Fn));
+                    const double kt = 8.0*law.equivalentShearModulus()*std::sqrt(R*delta);
+                    const double zeta = linearDampingRatio(et);
+                    dashpotOverLimit = std::max
+                    (
+                        dashpotOverLimit, 2.0*zeta*std::sqrt(kt*m)*Ut.norm()/(mu*Fn)
+                    );
+                }
+                slid += c.sliding;
+                ++steps;
+                const Vector F = c.normal + c.tangential;
+                vel += dt*F/m;
+                omega += dt*(R*n).cross(c.tangential)/I;
+                x += dt*vel;
+            }
+        }
+        EXPECT_LE(worst, 1.0 + 1e-12) << "e_t = " << et;
+        EXPECT_GT(slid, 0) << "e_t = " << et;
+        EXPECT_GT(steps, 17*1000) << "e_t = " << et;
+        if (et == 0.05)
+        {
+            EXPECT_GT(dashpotOverLimit, 1.0);
+        }
+    }
+}
+
 TEST(HertzMindlin, RejectsBadArguments)
 {
     EXPECT_THROW(ElasticMaterial(0.0, 0.3), std::invalid_argument);

@@ -123,7 +123,7 @@ void Foam::runBudget
             // contacts last microseconds, between rows: the wall force's
             // time mean from the normal impulses, its peak from the
             // largest overlap (the elastic part, k_n delta^(3/2))
-            impulse += law.mass()*(c.impactSpeed + c.reboundSpeed);
+            impulse += law.inertia()*(c.impactSpeed + c.reboundSpeed);
             peak = max
             (
                 peak,

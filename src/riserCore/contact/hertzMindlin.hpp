@@ -4,20 +4,21 @@
 //
 //   E_eq = [ (1 - nu_p^2)/E_p + (1 - nu_w^2)/E_w ]^-1
 //   G_eq = [ 2(2 + nu_p - nu_p^2)/E_p + 2(2 + nu_w - nu_w^2)/E_w ]^-1
-//   R_eq = R_p,  M_eq = m_p                         (wall: infinite R and m)
+//   R_eq = R_p,  M_eq = the particle's inertia     (wall: infinite R and m)
 //   k_n  = 4/3 E_eq sqrt(R_eq),   eta_n = alpha_n sqrt(k_n M_eq) delta_n^(1/4)
 //   F_n  = -( k_n delta_n^(3/2) + eta_n (U . n) ) n
 //   k_t  = 8 G_eq sqrt(R_eq delta_n),   eta_t = 2 zeta_t sqrt(k_t M_eq)
-//   F_t  = -k_t delta_t - eta_t U_t      while k_t |delta_t| <= mu_c |F_n|
-//        = -mu_c |F_n| delta_t/|delta_t| otherwise (sliding: delta_t is reset
-//          to the length mu_c |F_n| / k_t, so the spring holds the limit)
+//   F_t* = -k_t delta_t - eta_t U_t                  (trial force)
+//   F_t  = F_t*                          while |F_t*| <= mu_c |F_n|
+//        = mu_c |F_n| F_t*/|F_t*|        otherwise (sliding: delta_t is reset
+//          to -F_t/k_t, so that the spring alone carries the limit)
 //
-// A spring held at the limit and still stretched (delta_t . U_t > 0) slides:
-// the sticking branch's dashpot acts only below the limit. This is the
-// continuous-time reading of the law: without it, the reset spring would sit
-// exactly on the switch and a step's first stage alone would see the
-// dashpot, an O(1) jump that no step size resolves. With mu_c |F_n| = 0
-// there is no tangential force.
+// The Coulomb limit bounds the whole tangential force, spring and dashpot
+// together (Tsuji et al. 1992; as LAMMPS and LIGGGHTS do): |F_t| <= mu_c |F_n|
+// always. F_t is a continuous function of (delta_t, U_t): the switch between
+// sticking and sliding puts no jump into the force, which an adaptive
+// integrator needs (doc/theory.md section 3.4). With mu_c |F_n| = 0 there is
+// no tangential force.
 //
 // n: unit normal from the particle centre towards the wall; delta_n >= 0 the
 // overlap; U the velocity of the contact point relative to the wall, U_t its
@@ -89,11 +90,13 @@ struct HertzMindlinParameters
     NormalForceFloor floor = NormalForceFloor::tensionAllowed;
 };
 
-//- The particle in contact: R_eq = R_p and M_eq = m_p against the wall.
+//- The particle in contact: R_eq = R_p and M_eq against the wall, M_eq the
+//  inertia the contact force accelerates (m_p + C_A m_f in a fluid, where
+//  the added mass moves with the particle: doc/theory.md section 3.7).
 struct ContactBody
 {
     double radius;          //!< particle radius R_p [m]
-    double mass;            //!< particle mass m_p [kg]
+    double mass;            //!< the inertia M_eq [kg]
 
     ContactBody(double r, double m)
     :
@@ -166,25 +169,22 @@ public:
         const double kt = 8.0*Geq_*std::sqrt(b.radius*deltaN);
         const double etaT = 2.0*zetaT_*std::sqrt(kt*b.mass);
         const double limit = friction_*std::abs(fn);
-        const double spring = kt*deltaT.norm();
-        // at the limit the spring slides while it is being stretched; with
-        // no limit (mu_c = 0 or F_n = 0) there is no tangential force
-        const bool atLimit =
-            spring >= (1.0 - 1e-9)*limit && deltaT.dot(Ut) > 0.0;
+        const Vector trial = -kt*deltaT - etaT*Ut;
+        const double magTrial = trial.norm();
         if (limit <= 0.0)
         {
-            c.sliding = deltaT.norm() > 0.0 || Ut.norm() > 0.0;
+            // no limit (mu_c = 0 or F_n = 0): no tangential force
+            c.sliding = magTrial > 0.0;
         }
-        else if (spring <= limit && !atLimit)
+        else if (magTrial <= limit)
         {
-            c.tangential = -kt*deltaT - etaT*Ut;
+            c.tangential = trial;
             c.springAfter = deltaT;
         }
         else
         {
-            const Vector dir = deltaT/deltaT.norm();
-            c.tangential = -limit*dir;
-            c.springAfter = (limit/kt)*dir;
+            c.tangential = (limit/magTrial)*trial;
+            c.springAfter = -c.tangential/kt;
             c.sliding = true;
         }
         return c;

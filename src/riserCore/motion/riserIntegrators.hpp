@@ -178,7 +178,7 @@ public:
 private:
     bool valid_ = false;
     double t_ = 0.0;
-    State y_, k1_;
+    State y_ = State::Zero(), k1_ = State::Zero();
 };
 
 } // namespace detail

@@ -82,7 +82,10 @@ public:
     double fluidMass() const { return rhoF_*volume(); }
     bool hasContact() const { return bool(contact_); }
     const HertzMindlin& contactLaw() const { return *contact_; }
-    ContactBody body() const { return ContactBody{radius(), mass()}; }
+    //- The particle in a contact: its radius, and the inertia the contact
+    //  force accelerates (one inertia for every force, doc/theory.md
+    //  section 3.7), for which the damping is calibrated
+    ContactBody body() const { return ContactBody{radius(), inertia()}; }
 
     //- Mass with the added mass (the left-hand side)
     double inertia() const

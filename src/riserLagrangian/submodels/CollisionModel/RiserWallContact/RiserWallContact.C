@@ -41,9 +41,47 @@ Foam::OFstream& Foam::RiserWallContact<CloudType>::contactFile()
             << "# origProc origId tStart tEnd duration overlapMax"
             << " normalForceMax Uin_x Uin_y Uin_z Uout_x Uout_y Uout_z"
             << " omegaIn_x omegaIn_y omegaIn_z omegaOut_x omegaOut_y omegaOut_z"
+            << " UnIn UnOut"
             << nl;
     }
     return contactFile_();
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserWallContact<CloudType>::readAddedMassCoeff() const
+{
+    typedef typename CloudType::kinematicCloudType kinematicCloudType;
+    scalar CA = 0;
+    for (const auto& force : this->owner().forces())
+    {
+        if (force.type() == "virtualMass")
+        {
+            FatalErrorInFunction
+                << "particle force virtualMass with collisionModel "
+                << typeName << ": the wall contact accelerates m_p + C_A m_f"
+                << " with the C_A of riserAddedMass; replace virtualMass by"
+                << " riserAddedMass { CA 0.5; }" << exit(FatalError);
+        }
+        const auto* addedMass =
+            dynamic_cast<const RiserAddedMassForce<kinematicCloudType>*>(&force);
+        if (addedMass)
+        {
+            CA = addedMass->CA();
+        }
+    }
+    return CA;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserWallContact<CloudType>::effectiveMass
+(
+    const parcelType& p
+) const
+{
+    const scalar m = p.mass();
+    return m + addedMassCoeff_*m*this->owner().rho()[p.cell()]/p.rho();
 }
 
 
@@ -67,7 +105,8 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     maxSubCycles_
     (
         this->coeffDict().template lookupOrDefault<label>("maxSubCycles", 100000)
-    )
+    ),
+    addedMassCoeff_(readAddedMassCoeff())
 {
     checkedEntry::checkRange
     (
@@ -81,7 +120,8 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     carrier_.riser();
 
     Info<< "    riserWallContact: normal damping ratio "
-        << law_.normalDampingRatio() << ", rotation " << rotation_ << endl;
+        << law_.normalDampingRatio() << ", rotation " << rotation_
+        << ", inertia m_p + " << addedMassCoeff_ << " m_f" << endl;
 }
 
 
@@ -97,6 +137,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     rotation_(cm.rotation_),
     stepsPerContact_(cm.stepsPerContact_),
     maxSubCycles_(cm.maxSubCycles_),
+    addedMassCoeff_(cm.addedMassCoeff_),
     events_(cm.events_),
     lost_(cm.lost_)
 {}
@@ -132,7 +173,7 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
             continue;
         }
         ++nNear;
-        const riser::ContactBody body(0.5*p.d(), p.mass());
+        const riser::ContactBody body(0.5*p.d(), effectiveMass(p));
         const scalar tc = law_.contactTime(body, max(speed, SMALL));
         nSub = max(nSub, label(ceil(stepsPerContact_*dt/tc)));
     }
@@ -200,7 +241,9 @@ void Foam::RiserWallContact<CloudType>::collide()
                     << Uout.x() << ' ' << Uout.y() << ' ' << Uout.z() << ' '
                     << e.spinIn.x() << ' ' << e.spinIn.y() << ' '
                     << e.spinIn.z() << ' '
-                    << spin.x() << ' ' << spin.y() << ' ' << spin.z() << endl;
+                    << spin.x() << ' ' << spin.y() << ' ' << spin.z() << ' '
+                    << e.normalSpeedIn << ' '
+                    << -(Uout & fromCore(cp.normal)) << endl;
                 events_.erase(iter);
             }
             // no record accessed: update() drops the tangential spring
@@ -220,17 +263,19 @@ void Foam::RiserWallContact<CloudType>::collide()
             (magInPlane > VSMALL ? mag(spring)/magInPlane*inPlane : vector::zero)
           + (U - (U & n)*n)*dt;
 
+        const scalar mEff = effectiveMass(p);
         const riser::ContactForce c =
             law_.force
             (
-                riser::ContactBody(Rp, p.mass()),
+                riser::ContactBody(Rp, mEff),
                 overlap, toCore(n), toCore(U), toCore(spring)
             );
         spring = fromCore(c.springAfter);
 
         const vector Fn = fromCore(c.normal);
         const vector Ft = fromCore(c.tangential);
-        p.f() = Fn + Ft;
+        // the parcel divides f by m_p: the force on m_p + C_A m_f
+        p.f() = (p.mass()/mEff)*(Fn + Ft);
         if (rotation_)
         {
             p.torque() = (Rp*n) ^ Ft;
@@ -243,7 +288,11 @@ void Foam::RiserWallContact<CloudType>::collide()
             events_.insert
             (
                 key,
-                contactEvent{t - dt, overlap, mag(Fn), p.U() - Uwall, spin}
+                contactEvent
+                {
+                    t - dt, overlap, mag(Fn), p.U() - Uwall, (p.U() - Uwall) & n,
+                    spin
+                }
             );
         }
         else
