@@ -40,6 +40,13 @@ class Riser:
         """the riser's velocity along x: A omega cos(omega t + phi0)"""
         return _plain(self.A * self.omega * np.cos(self.omega * np.asarray(t) + self.phi0))
 
+    def axis_distance(self, x, y, t=0.0, frame="riser"):
+        """the distance of (x, y) from the riser's axis: coordinates relative
+        to the axis ('riser') or the lab's ('lab', the axis at x_c(t))"""
+        if frame == "lab":
+            x = np.asarray(x) - self.axis(t)
+        return _plain(np.hypot(x, y))
+
     def speed(self, r):
         """the Poiseuille speed at distance r from the axis (zero outside)"""
         return _plain(self.u_cm * np.maximum(0.0, 1.0 - (2.0 * np.asarray(r) / self.D) ** 2))
@@ -48,6 +55,5 @@ class Riser:
         """the carrier's velocity (u_x, u_y, u_z) at (x, y, z) and t: in the
         riser frame ('riser', coordinates relative to the axis) or the lab
         frame ('lab', the axis at x_c(t), the riser's velocity added)"""
-        if frame == "lab":
-            return (self.velocity(t), 0.0, self.speed(np.hypot(np.asarray(x) - self.axis(t), y)))
-        return (0.0, 0.0, self.speed(np.hypot(x, y)))
+        uz = self.speed(self.axis_distance(x, y, t, frame))
+        return (self.velocity(t) if frame == "lab" else 0.0, 0.0, uz)

@@ -11,8 +11,6 @@ import os
 import shutil
 import subprocess
 
-import numpy as np
-
 from . import foamfields as ff
 from . import tables
 from .carrier import D, UCM, Riser
@@ -110,7 +108,7 @@ class RiserCase:
                 "            nParticle 1; SOI 0; positionsFile \"%s\";\n"
                 "            U0 (0 0 %r);\n"
                 "            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }\n"
-                "        }\n" % (i, name, riser.speed(np.hypot(x, y) * D), d))
+                "        }\n" % (i, name, riser.speed(riser.axis_distance(x * D, y * D)), d))
         ff.replace_block(self._file("constant/kinematicCloudProperties"), "injectionModels",
                          "".join(blocks))
         return self

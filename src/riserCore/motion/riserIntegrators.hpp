@@ -288,9 +288,9 @@ private:
         {
             const ParticleState s = particle(x_, z);
             const ContactPoint c = contactPoint(t, z(3));
+            const Vector a = law_.forces(t, s, c).total()/law_.inertia();
             State dz;
-            dz << law_.forces(t, s, c).total()/law_.inertia(), (s.v - c.velocity).dot(n_),
-                  RiserParticleLaw::springRate(s, c);
+            dz << a, (s.v - c.velocity).dot(n_), RiserParticleLaw::springRate(s, c);
             return dz;
         }
 

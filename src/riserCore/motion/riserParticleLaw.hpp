@@ -209,7 +209,8 @@ public:
         return s;
     }
 
-    //- dy/dt at (t, y)
+    //- dy/dt at (t, y) (the law may throw: its values are computed before
+    //  they are put into dy)
     State rate(double t, const State& y) const
     {
         ParticleState s = unpack(y);
@@ -217,11 +218,13 @@ public:
         if (!contact_)
         {
             s.spring.setZero();
-            dy << s.v, law_.forces(t, s, std::nullopt).total()/law_.inertia(), Vector::Zero();
+            const Vector a = law_.forces(t, s, std::nullopt).total()/law_.inertia();
+            dy << s.v, a, Vector::Zero();
             return dy;
         }
         const ContactPoint c = law_.wallContact(s.x, t);
-        dy << s.v, law_.forces(t, s, c).total()/law_.inertia(), RiserParticleLaw::springRate(s, c);
+        const Vector a = law_.forces(t, s, c).total()/law_.inertia();
+        dy << s.v, a, RiserParticleLaw::springRate(s, c);
         return dy;
     }
 
