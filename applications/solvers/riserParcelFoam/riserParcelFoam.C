@@ -25,7 +25,11 @@ Description
     evaluation (exact or interpolated) and the frame (lab: moving mesh and
     wall; riser: static mesh, Poiseuille carrier and the frame force).
 
-    Checks at start: the riser exists; its diameter and axis agree with the
+    Checks at start: a restart's start time is complete (every file ends
+    with OpenFOAM's closing divider and holds every file of the time
+    written before it: a run killed while writing leaves files cut short or
+    missing), else the run stops naming the incomplete time and the latest
+    complete one to restart from (checkStartTime.H); the riser exists; its diameter and axis agree with the
     mesh (largest distance of a mesh point from the axis at t = 0 equal to
     D/2 within 0.1%); the frame agrees with the mesh motion (riser frame:
     static mesh; lab frame with a moving riser: a dynamic mesh).
@@ -49,6 +53,8 @@ Usage
 #include "carrierFlow.H"
 #include "coreVector.H"
 
+#include <fstream>
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 int main(int argc, char *argv[])
@@ -67,6 +73,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    #include "checkStartTime.H"
     #include "createDynamicFvMesh.H"
     #include "createFields.H"
 

@@ -52,13 +52,47 @@ template<class CloudType>
 void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 {
     const bool valid = c.size();
+    IOobject stepsIO(c.fieldIOobject("historySteps", IOobject::MUST_READ));
+    const bool histories = stepsIO.typeHeaderOk<IOField<label>>(true);
+
+    // the fields of fields (one list per particle) of the riser parcel: a
+    // copy of the time without some of them (reconstructPar of v1912 leaves
+    // them out when written in ascii and not selected) is refused here,
+    // naming the field, rather than wherever its reading fails
+    for
+    (
+        const word name
+      : {
+            "collisionRecordsPairAccessed", "collisionRecordsPairOrigProcOfOther",
+            "collisionRecordsPairOrigIdOfOther", "collisionRecordsPairData",
+            "collisionRecordsWallAccessed", "collisionRecordsWallPRel",
+            "collisionRecordsWallData", "historyWindow", "historyTail"
+        }
+    )
+    {
+        const bool history = name.compare(0, 7, "history") == 0;
+        if
+        (
+            valid && (histories || !history)
+         && !isFile(c.fieldIOobject(name, IOobject::MUST_READ).objectPath())
+        )
+        {
+            FatalErrorInFunction
+                << "Cloud " << c.name() << " at time " << c.time().timeName()
+                << ": " << c.size() << " particles but no field " << name
+                << " (" << c.fieldIOobject(name, IOobject::NO_READ).objectPath()
+                << "). reconstructPar of OpenFOAM v1912 leaves out the ascii"
+                << " fields of fields unless they are selected: run"
+                << " reconstructPar -lagrangianFields '(\".*\")'"
+                << exit(FatalError);
+        }
+    }
 
     ParcelType::readFields(c);
 
     // clouds written without histories (another solver, or initial
     // particles): each particle starts its history at its next step
-    IOobject stepsIO(c.fieldIOobject("historySteps", IOobject::MUST_READ));
-    if (valid && !stepsIO.typeHeaderOk<IOField<label>>(true))
+    if (valid && !histories)
     {
         Info<< "    " << c.name() << ": no Basset histories written at "
             << c.time().timeName() << "; they start at the next step" << endl;

@@ -10,6 +10,7 @@
 #include "boundBox.H"
 #include "coreVector.H"
 #include "output/particleTable.hpp"
+#include "IOField.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -18,26 +19,112 @@ Foam::OFstream& Foam::RiserParticleTable<CloudType>::file()
 {
     if (!file_.valid())
     {
-        file_ =
-            cloudOutputFile
-            (
-                this->owner().mesh(), this->owner().name(), typeName, "particles"
-            );
-        OFstream& os = file_();
         std::vector<std::string> forceNames;
         for (const auto& force : this->owner().forces())
         {
             forceNames.push_back(force.type());
         }
-        os  << "# riserParticleTable, SI units; relative: to the riser axis"
-            << " and velocity" << nl << '#';
+        std::string header =
+            "# riserParticleTable, SI units; relative: to the riser axis"
+            " and velocity\n#";
         for (const std::string& column : riser::particleTableColumns(forceNames))
         {
-            os  << ' ' << column.c_str();
+            header += ' ' + column;
         }
-        os  << nl;
+        file_ =
+            cloudOutputFile
+            (
+                this->owner().mesh(), this->owner().name(), typeName,
+                "particles", header + '\n', 0
+            );
     }
     return file_();
+}
+
+
+template<class CloudType>
+void Foam::RiserParticleTable<CloudType>::readOrigins()
+{
+    CloudType& cloud = this->owner();
+    IOobject io(cloud.fieldIOobject("liftOrigin", IOobject::MUST_READ));
+    if (io.typeHeaderOk<IOField<scalar>>(true))
+    {
+        restartOrigins_.reset(new scalarField(IOField<scalar>(io)));
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserParticleTable<CloudType>::updateLift()
+{
+    CloudType& cloud = this->owner();
+
+    // particles new here: released in this step, or come from another
+    // processor, whose origins the processors exchange
+    labelPairList missing;
+    for (const auto& p : cloud)
+    {
+        const labelPair key(p.origProc(), p.origId());
+        if (!lift_.found(key))
+        {
+            missing.append(key);
+        }
+    }
+    if (Pstream::parRun() && returnReduce(missing.size(), sumOp<label>()))
+    {
+        List<labelPairList> allMissing(Pstream::nProcs());
+        allMissing[Pstream::myProcNo()] = missing;
+        Pstream::gatherList(allMissing);
+        Pstream::scatterList(allMissing);
+
+        List<labelPairList> sentKeys(Pstream::nProcs());
+        List<List<vector2D>> sentStates(Pstream::nProcs());
+        forAll(allMissing, proci)
+        {
+            for (const labelPair& key : allMissing[proci])
+            {
+                auto iter = lift_.find(key);
+                if (proci != Pstream::myProcNo() && iter.found())
+                {
+                    sentKeys[Pstream::myProcNo()].append(key);
+                    sentStates[Pstream::myProcNo()].append(*iter);
+                    lift_.erase(iter);
+                }
+            }
+        }
+        Pstream::gatherList(sentKeys);
+        Pstream::scatterList(sentKeys);
+        Pstream::gatherList(sentStates);
+        Pstream::scatterList(sentStates);
+        forAll(sentKeys, proci)
+        {
+            forAll(sentKeys[proci], i)
+            {
+                lift_.insert(sentKeys[proci][i], sentStates[proci][i]);
+            }
+        }
+    }
+
+    for (auto& p : cloud)
+    {
+        const labelPair key(p.origProc(), p.origId());
+        const endOfStep<typename CloudType::parcelType> done(p);
+        const scalar z = p.position().z();
+        if (!lift_.found(key))
+        {
+            // released in this step: from the start of its first move
+            const scalar z0 = released_.lookup(key, z);
+            lift_.insert(key, vector2D(z0, z0));
+        }
+
+        // unwrap the height across the ends of a cyclic riser
+        vector2D& state = lift_[key];
+        const scalar jump = z - state.y();
+        if (jump > 0.5*length_) state.x() += length_;
+        if (jump < -0.5*length_) state.x() -= length_;
+        state.y() = z;
+    }
+    released_.clear();
 }
 
 
@@ -61,6 +148,7 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
         this->coeffDict(), "interval", interval_, 1, true, VGREAT, true
     );
     carrier_.riser();
+    readOrigins();
 }
 
 
@@ -75,17 +163,98 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
     interval_(t.interval_),
     calls_(t.calls_),
     length_(t.length_),
-    z0_(t.z0_),
-    lastZ_(t.lastZ_),
-    offset_(t.offset_)
+    lift_(t.lift_),
+    released_(t.released_),
+    restartOrigins_
+    (
+        t.restartOrigins_.valid()
+      ? new scalarField(t.restartOrigins_())
+      : nullptr
+    )
 {}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::RiserParticleTable<CloudType>::write()
+{
+    CloudType& cloud = this->owner();
+    IOField<scalar> origins
+    (
+        cloud.fieldIOobject("liftOrigin", IOobject::NO_READ),
+        cloud.size()
+    );
+    label i = 0;
+    for (const auto& p : cloud)
+    {
+        origins[i++] = lift_[labelPair(p.origProc(), p.origId())].x();
+    }
+    origins.write(cloud.size() > 0);
+}
+
+
+template<class CloudType>
+void Foam::RiserParticleTable<CloudType>::preEvolve()
+{
+    CloudFunctionObject<CloudType>::preEvolve();
+    if (calls_ > 0)
+    {
+        return;
+    }
+    CloudType& cloud = this->owner();
+    const word startTime = cloud.time().timeName(cloud.time().startTime().value());
+    if (!restartOrigins_.valid())
+    {
+        if (cloud.size())
+        {
+            Info<< "    " << typeName << ": no liftOrigin written at "
+                << startTime << "; the lifts start there" << endl;
+        }
+        return;
+    }
+    const scalarField& origins = restartOrigins_();
+    if (origins.size() != cloud.size())
+    {
+        FatalErrorInFunction
+            << "Field liftOrigin of cloud " << cloud.name() << " at time "
+            << startTime << " holds " << origins.size() << " values for "
+            << cloud.size() << " particles" << exit(FatalError);
+    }
+    label i = 0;
+    for (const auto& p : cloud)
+    {
+        lift_.set
+        (
+            labelPair(p.origProc(), p.origId()),
+            vector2D(origins[i++], p.position().z())
+        );
+    }
+    restartOrigins_.clear();
+}
+
+
+template<class CloudType>
+void Foam::RiserParticleTable<CloudType>::postMove
+(
+    typename CloudType::parcelType& p,
+    const scalar dt,
+    const point& position0,
+    bool& keepParticle
+)
+{
+    const labelPair key(p.origProc(), p.origId());
+    if (!lift_.found(key) && !released_.found(key))
+    {
+        released_.insert(key, position0.z());
+    }
+}
+
+
+template<class CloudType>
 void Foam::RiserParticleTable<CloudType>::postEvolve()
 {
+    updateLift();
     CloudFunctionObject<CloudType>::postEvolve();
     if (calls_++ % interval_ != 0)
     {
@@ -109,19 +278,6 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
         const endOfStep<typename CloudType::parcelType> done(p);
         const point x = p.position();
 
-        // unwrap the height across the ends of a cyclic riser
-        if (!z0_.found(key))
-        {
-            z0_.insert(key, x.z());
-            lastZ_.insert(key, x.z());
-            offset_.insert(key, 0);
-        }
-        scalar& offset = offset_[key];
-        const scalar jump = x.z() - lastZ_[key];
-        if (jump > 0.5*length_) offset -= length_;
-        if (jump < -0.5*length_) offset += length_;
-        lastZ_[key] = x.z();
-
         riser::ParticleTableRow row
         (
             t, key.first(), key.second(),
@@ -129,7 +285,7 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
             labFrame ? toCore(p.U()) : motion.labVelocity(toCore(p.U()), t),
             motion
         );
-        row.lift = x.z() + offset - z0_[key];
+        row.lift = x.z() - lift_[key].x();
         row.contactForce = toCore(p.f());
         row.deltaN = max(0, wall.overlap(toCore(x), 0.5*p.d(), t));
         for (const auto& record : p.collisionRecords().wallRecords())

@@ -31,18 +31,15 @@ Foam::OFstream& Foam::RiserWallContact<CloudType>::contactFile()
         contactFile_ =
             cloudOutputFile
             (
-                this->owner().mesh(), this->owner().name(), typeName, "contacts"
+                this->owner().mesh(), this->owner().name(), typeName, "contacts",
+                "# riserWallContact: one completed particle-wall contact a line\n"
+                "# velocities relative to the wall [m/s], spin [rad/s], SI units\n"
+                "# origProc origId tStart tEnd duration overlapMax"
+                " normalForceMax Uin_x Uin_y Uin_z Uout_x Uout_y Uout_z"
+                " omegaIn_x omegaIn_y omegaIn_z omegaOut_x omegaOut_y omegaOut_z"
+                " UnIn UnOut\n",
+                3   // tEnd: a contact is kept when it ended by the start time
             );
-        contactFile_()
-            << "# riserWallContact: one completed particle-wall contact a line"
-            << nl
-            << "# velocities relative to the wall [m/s], spin [rad/s], SI units"
-            << nl
-            << "# origProc origId tStart tEnd duration overlapMax"
-            << " normalForceMax Uin_x Uin_y Uin_z Uout_x Uout_y Uout_z"
-            << " omegaIn_x omegaIn_y omegaIn_z omegaOut_x omegaOut_y omegaOut_z"
-            << " UnIn UnOut"
-            << nl;
     }
     return contactFile_();
 }

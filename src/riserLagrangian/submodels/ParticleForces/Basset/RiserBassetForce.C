@@ -6,6 +6,7 @@
 #include "RiserBassetForce.H"
 #include "checkedEntry.H"
 #include "particleForceEvaluation.H"
+#include "IOField.H"
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
@@ -45,6 +46,73 @@ riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
         window = label(std::lround(windowTime/deltaT));
     }
     return riser::HistoryKernel(method, deltaT, window, tail);
+}
+
+
+template<class CloudType>
+void Foam::RiserBassetForce<CloudType>::checkStoredHistories()
+{
+    CloudType& cloud = this->owner();
+    const Time& time = this->mesh().time();
+    const scalar deltaT = time.deltaTValue();
+
+    // what the histories depend on (readKernel has checked the entries)
+    dictionary settings;
+    settings.add("method", word(kernel_.windowed() ? "windowTail" : "fullHistory"));
+    settings.add("deltaT", deltaT);
+    if (kernel_.windowed())
+    {
+        settings.add("windowTime", kernel_.window()*deltaT);
+        settings.add
+        (
+            "tail",
+            this->coeffs().template lookupOrDefault<word>("tail", "vanHinsberg2011")
+        );
+    }
+
+    dictionary& stored = cloud.outputProperties().subDictOrAdd(typeName);
+    const bool historiesWritten =
+        cloud.fieldIOobject("historySteps", IOobject::MUST_READ)
+       .template typeHeaderOk<IOField<label>>(true);
+    if (historiesWritten && stored.found("method"))
+    {
+        // the method first: the other entries belong to it
+        for (const word key : {"method", "deltaT", "windowTime", "tail"})
+        {
+            if (!stored.found(key) || !settings.found(key))
+            {
+                continue;
+            }
+            const bool real = key == "deltaT" || key == "windowTime";
+            auto text = [&](const dictionary& d)
+            {
+                return real ? Foam::name(d.get<scalar>(key)) : d.get<word>(key);
+            };
+            const bool same =
+                real
+              ? mag(stored.get<scalar>(key) - settings.get<scalar>(key))
+                <= 1e-9*settings.get<scalar>(key)
+              : stored.get<word>(key) == settings.get<word>(key);
+            if (!same)
+            {
+                FatalIOErrorInFunction(this->coeffs())
+                    << typeName << ": entry '" << key << "' = "
+                    << text(settings)
+                    << (key == "deltaT" ? " (system/controlDict)" : "")
+                    << " differs from " << text(stored)
+                    << ", the value the Basset histories written at "
+                    << time.timeName() << " were built with ("
+                    << cloud.outputProperties().objectPath() << "), and they"
+                    << " cannot be converted exactly." << nl
+                    << "Keep " << text(stored) << ", or restart"
+                    << " without the histories (remove the history* fields of "
+                    << time.timeName() << ": each particle's history then"
+                    << " starts at the next step)." << exit(FatalIOError);
+            }
+        }
+    }
+    stored.clear();
+    stored.merge(settings);
 }
 
 
@@ -123,7 +191,9 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
     kernel_(readKernel(this->coeffs(), mesh.time().deltaTValue())),
     stepOpen_(false),
     endedTime_(-GREAT)
-{}
+{
+    checkStoredHistories();
+}
 
 
 template<class CloudType>
