@@ -80,6 +80,18 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
             );
         }
         UName_ = dict.lookupOrDefault<word>("U", "U");
+
+        // a computed flow is the mesh's: the analytic one would replace it
+        const dictionary& solvers =
+            static_cast<const fvSolution&>(mesh).subOrEmptyDict("solvers");
+        if (exact() && !forceInterpolated && solvers.found(UName_))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'carrier' = exact, but system/fvSolution has a solver"
+                << " for the carrier " << UName_ << ": a computed flow must be"
+                << " interpolated (set carrier interpolated)"
+                << exit(FatalIOError);
+        }
     }
     if (forceInterpolated)
     {
