@@ -9,8 +9,11 @@ Every function takes scalars (and gives floats) or numpy arrays.
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 import math
+import os
 
 import numpy as np
+
+from . import foamfields as ff
 
 # the tutorials' riser and the paper's scenes (Wei et al. 2023): the
 # length D = 0.1 m and the velocity u_cm = 1 m/s, the units of A [D] and
@@ -31,6 +34,16 @@ class Riser:
         self.D, self.u_cm, self.A, self.phi0 = D, u_cm, A, phi0
         self.omega = 2.0 * math.pi * f if omega is None else omega
         self.f = f if omega is None else omega / (2.0 * math.pi)
+
+    @classmethod
+    def of_case(cls, case):
+        """The riser of the case folder's constant/riserProperties."""
+        path = os.path.join(case, "constant", "riserProperties")
+        entry = lambda name, default=None: (  # noqa: E731
+            ff.read_entry(path, name) if ff.read_entry(path, name) is not None else default)
+        omega = entry("omega")
+        return cls(entry("D"), entry("uCentre"), entry("A"), entry("f", 0.0),
+                   entry("phi0", 0.0), omega)
 
     def axis(self, t):
         """x_c(t) = A sin(omega t + phi0)"""

@@ -2,7 +2,7 @@
 
 Reading: the vector and scalar lists OpenFOAM writes (a lagrangian field,
 the internal field or a patch's value of a volume field), as N(...) or as
-the uniform N{value}. Writing: a FoamFile header, a whole file, a
+the uniform N{value}; a top-level number entry of a dictionary. Writing: a FoamFile header, a whole file, a
 volVectorField whose values a function of the position gives. Editing: a
 top-level entry of a dictionary, a regular-expression edit, a block
 replaced by another.
@@ -85,6 +85,14 @@ def read_scalars(path, entry=None):
     if len(values) != count:
         raise ValueError("%s: %d values, the list says %d" % (path, len(values), count))
     return values
+
+
+def read_entry(path, name):
+    """The number of a top-level entry 'name value;' or 'name [dims] value;'
+    of a dictionary file, or None when the entry is absent."""
+    match = re.search(r"^\s*%s\s+(?:\[[^\]]*\]\s*)?(%s)\s*;" % (re.escape(name), _NUMBER),
+                      _body(path), re.M)
+    return float(match.group(1)) if match else None
 
 
 # ------------------------------------------------------------------ writing

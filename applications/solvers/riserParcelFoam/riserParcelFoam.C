@@ -51,6 +51,7 @@ Usage
 #include "singlePhaseTransportModel.H"
 #include "basicRiserCloud.H"
 #include "carrierFlow.H"
+#include "modelEntries.H"
 #include "coreVector.H"
 
 #include <fstream>

@@ -25,11 +25,10 @@ Foam::integratorChoice Foam::readIntegrator
     {
         dict = IOdictionary(io);
     }
+    allowedKeys(dict, {"writeFrom", "integrator", "adaptiveCoeffs", "paperCoeffs"});
     integratorChoice c;
-    if (dict.found("writeFrom"))
-    {
-        c.writeFrom = checkedEntry::nonNegative(dict, "writeFrom");
-    }
+    // rows from writeFrom on: at or after endTime there would be none
+    c.writeFrom = inRange(dict, "writeFrom", 0, true, s.endTime, false, 0);
     c.name = args.getOrDefault<word>
     (
         "integrator", dict.lookupOrDefault<word>("integrator", "adaptive")
@@ -38,20 +37,19 @@ Foam::integratorChoice Foam::readIntegrator
     if (c.name == "adaptive")
     {
         const dictionary& coeffs = dict.subOrEmptyDict("adaptiveCoeffs");
-        const scalar tol =
-            coeffs.found("tolerance") ? inRange(coeffs, "tolerance", 0, false, 1, false) : 1e-6;
-        const scalar maxStep =
-            coeffs.found("maxStep") ? positive(coeffs, "maxStep") : VGREAT;
+        allowedKeys(coeffs, {"tolerance", "maxStep"});
+        const scalar tol = inRange(coeffs, "tolerance", 1e-14, true, 1, false, 1e-6);
+        const scalar maxStep = inRange(coeffs, "maxStep", 1e-10, true, VGREAT, true, VGREAT);
         c.adaptive.reset(new riser::AdaptiveScheme(tol, maxStep));
     }
     else if (c.name == "paper")
     {
         const dictionary& coeffs = dict.subOrEmptyDict("paperCoeffs");
-        const scalar flow =
-            coeffs.found("flowStep") ? positive(coeffs, "flowStep") : 1e-3*unit;
+        allowedKeys(coeffs, {"flowStep", "contactStep", "eps", "contactStart"});
+        const scalar flow = inRange(coeffs, "flowStep", 1e-10, true, VGREAT, true, 1e-3*unit);
         const scalar contact =
-            coeffs.found("contactStep") ? positive(coeffs, "contactStep") : 1e-6*unit;
-        const scalar eps = coeffs.found("eps") ? nonNegative(coeffs, "eps") : 1e-3;
+            inRange(coeffs, "contactStep", 1e-10, true, VGREAT, true, 1e-6*unit);
+        const scalar eps = inRange(coeffs, "eps", 0, true, 1, false, 1e-3);
         const word start = coeffs.lookupOrDefault<word>("contactStart", "detection");
         if (start != "detection" && start != "geometric")
         {

@@ -19,20 +19,23 @@ Description
 
     Integrator (system/riserParticleDict, optional; -integrator overrides):
     \verbatim
-    writeFrom       0.46;           // [s] rows from this time on (default:
+    writeFrom       0.46;           // [s] rows from this time on, in
+                                    // [0, endTime) (default:
                                     // all; with a fine deltaT, the inside of
                                     // a contact)
     integrator      adaptive;       // adaptive | paper
     adaptiveCoeffs
     {
-        tolerance   1e-6;           // relative, in (0, 1)
-        maxStep     5e-4;           // [s], default none (rows bound the steps)
+        tolerance   1e-6;           // relative, in [1e-14, 1)
+        maxStep     5e-4;           // [s], >= 1e-10, default none (rows
+                                    // bound the steps)
     }
     paperCoeffs
     {
-        flowStep    1e-4;           // [s], default 1e-3 D/u_cm (the paper's)
-        contactStep 1e-7;           // [s], default 1e-6 D/u_cm
-        eps         1e-3;           // contact when the gap < eps d
+        flowStep    1e-4;           // [s], >= 1e-10, default 1e-3 D/u_cm
+                                    // (the paper's)
+        contactStep 1e-7;           // [s], >= 1e-10, default 1e-6 D/u_cm
+        eps         1e-3;           // contact when the gap < eps d, [0, 1)
         contactStart detection;     // detection | geometric: the contact's
                                     // overlap starts at zero (or the gap)
                                     // or at the flow step's penetration

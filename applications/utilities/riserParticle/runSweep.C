@@ -29,7 +29,10 @@ struct sweepRow
 };
 
 
-List<scalar> readSweepList(const dictionary& dict, const word& key, bool zeroAllowed)
+List<scalar> readSweepList
+(
+    const dictionary& dict, const word& key, bool zeroAllowed, scalar hi
+)
 {
     const List<scalar> values = dict.get<List<scalar>>(key);
     if (values.empty())
@@ -39,12 +42,16 @@ List<scalar> readSweepList(const dictionary& dict, const word& key, bool zeroAll
     }
     forAll(values, i)
     {
-        if (!(zeroAllowed ? values[i] >= 0 : values[i] > 0) || !std::isfinite(values[i]))
+        if
+        (
+            !(zeroAllowed ? values[i] >= 0 : values[i] > 0)
+         || !(values[i] <= hi)
+        )
         {
             FatalIOErrorInFunction(dict)
                 << "sweep list '" << key << "' entry " << i << " = " << values[i]
                 << " outside the allowed range " << (zeroAllowed ? "[0" : "(0")
-                << ", inf)" << exit(FatalIOError);
+                << ", " << hi << "]" << exit(FatalIOError);
         }
     }
     return values;
@@ -166,10 +173,19 @@ void Foam::runSweep
 {
     using namespace checkedEntry;
     const IOdictionary dict(readCaseDict(runTime, "riserSweepDict", runTime.system()));
-    const List<scalar> As = readSweepList(dict, "A", true);
-    const List<scalar> fs = readSweepList(dict, "f", false);
-    const label periods = label(inRange(dict, "periods", 1, true, 1e6, true));
-    const scalar liftTime = dict.found("liftTime") ? nonNegative(dict, "liftTime") : 0;
+    allowedKeys(dict, {"A", "f", "periods", "liftTime"});
+    const List<scalar> As = readSweepList(dict, "A", true, carrierFlow::maxAmplitude);
+    const List<scalar> fs = readSweepList(dict, "f", false, carrierFlow::maxFrequency);
+    for (const scalar A : As)
+    {
+        for (const scalar f : fs)
+        {
+            carrierFlow::checkWallMotion(dict, A, f);
+        }
+    }
+    const label periods = count(dict, "periods", 1, 10000);
+    // the lift read after the longest case's periods would lengthen them all
+    const scalar liftTime = inRange(dict, "liftTime", 0, true, periods/min(fs), true, 0);
     if (scene.releases.empty())
     {
         FatalErrorInFunction << "the case releases no particle" << exit(FatalError);

@@ -80,6 +80,18 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
             );
         }
         UName_ = dict.lookupOrDefault<word>("U", "U");
+
+        // a computed flow is the mesh's: the analytic one would replace it
+        const dictionary& solvers =
+            static_cast<const fvSolution&>(mesh).subOrEmptyDict("solvers");
+        if (exact() && !forceInterpolated && solvers.found(UName_))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'carrier' = exact, but system/fvSolution has a solver"
+                << " for the carrier " << UName_ << ": a computed flow must be"
+                << " interpolated (set carrier interpolated)"
+                << exit(FatalIOError);
+        }
     }
     if (forceInterpolated)
     {
@@ -106,16 +118,48 @@ Foam::carrierFlow& Foam::carrierFlow::New(const fvMesh& mesh)
 }
 
 
+const Foam::scalar Foam::carrierFlow::maxDiameter = 10;
+const Foam::scalar Foam::carrierFlow::maxSpeed = 100;
+const Foam::scalar Foam::carrierFlow::maxAmplitude = 10;
+const Foam::scalar Foam::carrierFlow::maxFrequency = 1000;
+const Foam::scalar Foam::carrierFlow::maxAcceleration = 1e4;
+
+
+void Foam::carrierFlow::checkWallMotion
+(
+    const dictionary& dict,
+    const scalar A,
+    const scalar f
+)
+{
+    const scalar omega = constant::mathematical::twoPi*f;
+    if (A*omega > maxSpeed || A*omega*omega > maxAcceleration)
+    {
+        FatalIOErrorInFunction(dict)
+            << "entries 'A' = " << A << " m and 'f' = " << f << " Hz (omega = "
+            << omega << " rad/s) give the wall a speed A omega = " << A*omega
+            << " m/s and an acceleration A omega^2 = " << A*omega*omega
+            << " m/s^2; a riser's are at most " << maxSpeed << " m/s and "
+            << maxAcceleration << " m/s^2" << nl << exit(FatalIOError);
+    }
+}
+
+
 riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
 {
     using checkedEntry::dimensionedInRange;
+    using constant::mathematical::twoPi;
 
+    checkedEntry::allowedKeys
+    (
+        dict, {"D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier", "U"}
+    );
     const scalar D =
-        dimensionedInRange(dict, "D", dimLength, 0, false, VGREAT, true);
+        dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
     const scalar uCentre =
-        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, VGREAT, true);
+        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, maxSpeed, true);
     const scalar A =
-        dimensionedInRange(dict, "A", dimLength, 0, true, VGREAT, true);
+        dimensionedInRange(dict, "A", dimLength, 0, true, maxAmplitude, true);
 
     const bool hasF = dict.found("f"), hasOmega = dict.found("omega");
     if (hasF == hasOmega)
@@ -125,11 +169,16 @@ riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
             << exit(FatalIOError);
     }
     const scalar omega = hasF
-      ? constant::mathematical::twoPi
-       *dimensionedInRange(dict, "f", dimless/dimTime, 0, true, VGREAT, true)
-      : dimensionedInRange(dict, "omega", dimless/dimTime, 0, true, VGREAT, true);
+      ? twoPi
+       *dimensionedInRange(dict, "f", dimless/dimTime, 0, true, maxFrequency, true)
+      : dimensionedInRange
+        (
+            dict, "omega", dimless/dimTime, 0, true, twoPi*maxFrequency, true
+        );
+    checkWallMotion(dict, A, omega/twoPi);
 
-    const scalar phi0 = dict.lookupOrDefault<scalar>("phi0", 0);
+    const scalar phi0 =
+        checkedEntry::inRange(dict, "phi0", -twoPi, true, twoPi, true, 0);
 
     return riser::RiserFlow(D, uCentre, A, omega, phi0);
 }

@@ -3,7 +3,11 @@
 the mesh-free engine, in the paper's dimensionless units (length D, velocity
 u_cm, time D/u_cm), as in Wei et al. (2023), figs. 6-19.
 
-usage: plotRiserTable.py <particles.dat> <D> <u_cm> <A> <f> <phi0> <out prefix> [title]
+usage: plotRiserTable.py <particles.dat> <out prefix> [title]
+
+The riser (D, u_cm, A, f, phi0) is the case's constant/riserProperties, in
+the current folder (the case's), so the walls drawn and the title's A and f
+are those the case ran with.
 
 Writes <prefix>_track3d.png (the particle tracks relative to the riser
 axis, inside the riser wall, in 3-D; ParaView is not installed by the
@@ -28,13 +32,17 @@ from riserfoam.carrier import Riser  # noqa: E402
 
 
 def main():
-    path, D, ucm, A, f, phi0, prefix = sys.argv[1:8]
-    title = sys.argv[8] if len(sys.argv) > 8 else ""
-    D, ucm, A, f, phi0 = map(float, (D, ucm, A, f, phi0))
+    path, prefix = sys.argv[1:3]
+    riser = Riser.of_case(".")
+    D, ucm = riser.D, riser.u_cm
+    title = "A = %.3g D, f = %.3g u_cm/D (%.3g m, %.3g Hz)" % (
+        riser.A / D, riser.f * D / ucm, riser.A, riser.f)
+    if len(sys.argv) > 3:
+        title = sys.argv[3] + ": " + title
     T = D / ucm
     table = tables.read(path)
     times = np.unique(table["t"])
-    xc = Riser(D, ucm, A, f, phi0).axis(times) / D
+    xc = riser.axis(times) / D
     particles = table.group_by("origProc", "origId")
 
     fig, ax = plt.subplots(2, 2, figsize=(11, 7), sharex=True)

@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "ParticleForceFields.H"
+#include "checkedEntry.H"
 #include "particleForceEvaluation.H"
 #include "IOField.H"
 
@@ -18,7 +19,9 @@ Foam::ParticleForceFields<CloudType>::ParticleForceFields
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName)
-{}
+{
+    checkedEntry::allowedKeys(this->coeffDict(), {"type"});
+}
 
 
 template<class CloudType>

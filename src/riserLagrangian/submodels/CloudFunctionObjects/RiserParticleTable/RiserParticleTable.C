@@ -140,13 +140,10 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
     carrier_(carrierFlow::New(owner.mesh())),
-    interval_(this->coeffDict().template lookupOrDefault<label>("interval", 1)),
+    interval_(checkedEntry::count(this->coeffDict(), "interval", 1, 1000000000, 1)),
     length_(boundBox(owner.mesh().points()).span().z())
 {
-    checkedEntry::checkRange
-    (
-        this->coeffDict(), "interval", interval_, 1, true, VGREAT, true
-    );
+    checkedEntry::allowedKeys(this->coeffDict(), {"type", "interval"});
     carrier_.riser();
     readOrigins();
 }

@@ -97,22 +97,14 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     rotation_(this->coeffDict().lookupOrDefault("rotation", Switch(false))),
     stepsPerContact_
     (
-        this->coeffDict().template lookupOrDefault<label>("stepsPerContact", 40)
+        checkedEntry::count(this->coeffDict(), "stepsPerContact", 10, 10000, 40)
     ),
     maxSubCycles_
     (
-        this->coeffDict().template lookupOrDefault<label>("maxSubCycles", 100000)
+        checkedEntry::count(this->coeffDict(), "maxSubCycles", 1, 100000000, 100000)
     ),
     addedMassCoeff_(readAddedMassCoeff())
 {
-    checkedEntry::checkRange
-    (
-        this->coeffDict(), "stepsPerContact", stepsPerContact_, 10, true, GREAT, true
-    );
-    checkedEntry::checkRange
-    (
-        this->coeffDict(), "maxSubCycles", maxSubCycles_, 1, true, GREAT, true
-    );
     // the riser must exist: FatalError here rather than at the first step
     carrier_.riser();
 
@@ -163,8 +155,20 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
                 << flow.diameter() << " (constant/riserProperties)"
                 << exit(FatalError);
         }
-        const scalar speed = mag(p.U()) + wallSpeedMax;
         const scalar gap = wall.distance(toCore(p.position()), t0) - 0.5*p.d();
+        if (p.age() == 0 && gap <= 0)
+        {
+            // injected in this step (a parcel that moved between processors
+            // is older): released touching or overlapping the wall
+            FatalErrorInFunction
+                << "particle " << p.origId() << " (processor " << p.origProc()
+                << ") of diameter " << p.d() << " is released at "
+                << p.position() << " at t = " << t0 << " touching or"
+                << " overlapping the riser wall: overlap " << -gap
+                << " >= 0; release it at least d/2 from the wall"
+                << exit(FatalError);
+        }
+        const scalar speed = mag(p.U()) + wallSpeedMax;
         if (gap > speed*dt)
         {
             continue;
@@ -172,18 +176,24 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
         ++nNear;
         const riser::ContactBody body(0.5*p.d(), effectiveMass(p));
         const scalar tc = law_.contactTime(body, max(speed, SMALL));
-        nSub = max(nSub, label(ceil(stepsPerContact_*dt/tc)));
+        // as a scalar first: no overflow of the label
+        const scalar needed = ceil(stepsPerContact_*dt/tc);
+        if (!(needed <= maxSubCycles_))
+        {
+            FatalErrorInFunction
+                << "particle " << p.origId() << " (processor " << p.origProc()
+                << ") at " << p.position() << " needs " << needed
+                << " sub-cycles of the step deltaT = " << dt << " to resolve"
+                << " its wall contact (contact time " << tc << " s, "
+                << stepsPerContact_ << " sub-cycles each), more than"
+                << " maxSubCycles = " << maxSubCycles_ << ": reduce deltaT or"
+                << " raise maxSubCycles" << exit(FatalError);
+        }
+        nSub = max(nSub, label(needed));
     }
     reduce(nSub, maxOp<label>());
     reduce(nNear, sumOp<label>());
 
-    if (nSub > maxSubCycles_)
-    {
-        WarningInFunction
-            << nSub << " sub-cycles needed to resolve the wall contacts, "
-            << "limited to maxSubCycles = " << maxSubCycles_ << endl;
-        nSub = maxSubCycles_;
-    }
     if (nNear)
     {
         Info<< "    riserWallContact: " << nNear << " particle(s) near the wall"

@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserAddedMassForce.H"
-#include "checkedEntry.H"
+#include "modelEntries.H"
 #include "addedMass/addedMass.hpp"
 #include "coreVector.H"
 
@@ -19,7 +19,7 @@ Foam::RiserAddedMassForce<CloudType>::RiserAddedMassForce
 )
 :
     RiserFluidStressForce<CloudType>(owner, mesh, dict, typeName, true),
-    CA_(checkedEntry::nonNegative(this->coeffs(), "CA"))
+    CA_(modelEntries::addedMassCoefficient(this->coeffs()))
 {}
 
 

@@ -17,6 +17,7 @@ riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
     const scalar deltaT
 )
 {
+    checkedEntry::allowedKeys(coeffs, {"coefficient", "method", "tail", "windowTime"});
     const riser::HistoryMethod method =
         coeffs.found("method")
       ? checkedEntry::choice<riser::HistoryMethod>
@@ -42,7 +43,10 @@ riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
     {
         // at least two flow steps: the window holds the slab that leaves it
         const scalar windowTime =
-            checkedEntry::inRange(coeffs, "windowTime", 2*deltaT, true, VGREAT, true);
+            checkedEntry::inRange
+            (
+                coeffs, "windowTime", 2*deltaT, true, 1e5*deltaT, true
+            );
         window = label(std::lround(windowTime/deltaT));
     }
     return riser::HistoryKernel(method, deltaT, window, tail);

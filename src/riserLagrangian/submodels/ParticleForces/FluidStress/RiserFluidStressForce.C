@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserFluidStressForce.H"
+#include "modelEntries.H"
 #include "fluidStress/fluidStress.hpp"
 #include "coreVector.H"
 
@@ -21,7 +22,12 @@ Foam::RiserFluidStressForce<CloudType>::RiserFluidStressForce
 :
     ParticleForce<CloudType>(owner, mesh, dict, forceType, readCoeffs),
     carrier_(carrierFlow::New(mesh))
-{}
+{
+    if (!readCoeffs)
+    {
+        modelEntries::noCoeffs(dict, forceType);
+    }
+}
 
 
 template<class CloudType>

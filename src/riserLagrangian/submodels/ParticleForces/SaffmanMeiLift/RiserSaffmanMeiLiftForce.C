@@ -4,6 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserSaffmanMeiLiftForce.H"
+#include "modelEntries.H"
 #include "lift/saffmanMeiLift.hpp"
 #include "coreVector.H"
 
@@ -19,7 +20,9 @@ Foam::RiserSaffmanMeiLiftForce<CloudType>::RiserSaffmanMeiLiftForce
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, false),
     carrier_(carrierFlow::New(mesh))
-{}
+{
+    modelEntries::noCoeffs(dict, typeName);
+}
 
 
 template<class CloudType>

@@ -41,7 +41,13 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
     carrier_(carrierFlow::New(mesh)),
     law_(modelEntries::dragLaw(this->coeffs())),
-    pipeDiameter_(checkedEntry::positive(this->coeffs(), "pipeDiameter")),
+    pipeDiameter_
+    (
+        modelEntries::pipeDiameter
+        (
+            this->coeffs(), carrier_.hasRiser() ? &carrier_.riser() : nullptr
+        )
+    ),
     lastDiameter_(-1),
     lastFactors_(0)
 {}
