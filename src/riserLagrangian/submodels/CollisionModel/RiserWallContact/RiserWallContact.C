@@ -111,6 +111,10 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     Info<< "    riserWallContact: normal damping ratio "
         << law_.normalDampingRatio() << ", rotation " << rotation_
         << ", inertia m_p + " << addedMassCoeff_ << " m_f" << endl;
+    // the contact table is opened (and, on a restart, continued up to the
+    // start time) now, not at the first completed contact: a restart after
+    // which no contact ends must not keep the rows after its start
+    contactFile();
 }
 
 
