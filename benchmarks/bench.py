@@ -1,5 +1,5 @@
 """riserFoam benchmarks: riserParcelFoam against stock OpenFOAM v1912,
-scaling with particles and with processors (issue 8).
+scaling with particles and with processors.
 
 Runs the suites below on one riser mesh, in one process, alternating the
 variants (A, B, C, A, B, C, ...) so that the machine's load falls on all of

@@ -11,7 +11,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
-# targets of issue 8
+# the targets
 TARGET_LAB = {"riserLab": 1.3, "riserLabBasset": 1.5}     # x stock DyM sphereDrag + gravity
 TARGET_RISER_FRAME = 2.0                                  # riserFrameBasset x stock static
 TARGET_SPEEDUP = 1.7
@@ -101,13 +101,13 @@ def analyse(res):
 
 def summary(res, a):
     m = res["machine"]
-    lines = ["# riserFoam benchmarks (issue 8)", ""]
+    lines = ["# riserFoam benchmarks", ""]
     if res.get("label"):
         lines += ["**%s**" % res["label"], ""]
     lines += [
              "Machine: %s, %s cores (nproc), %s RAM, Linux %s; %s; OpenFOAM %s. "
              "Date: %s. Load average at start %s, at end %s (a shared machine: "
-             "another engineer's builds and runs were going on)." % (
+             "other builds and runs were going on)." % (
                  m["cpu"], m["nproc"], m["memory"], m["kernel"], "riserParcelFoam sha256 "
                  + str(m.get("riserParcelFoamSha256")), m["openfoam"], m["date"],
                  " ".join(m["loadAverageAtStart"]), " ".join(m.get("loadAverageAtEnd", ["?"]))),

@@ -21,7 +21,7 @@ TEST(DragCoefficient, StokesLimit)
 
 // K at d/D = 0.1, evaluated by hand from the Clift-Grace-Weber formula:
 // (1 - 7.5857e-6) / (1 - 0.2105 + 0.0020865 - 1.7068e-5 + 7.2603e-7) = 1.26331.
-// The issue gives 1.2633 (5 digits): tolerance half a unit of its last digit.
+// The reference value is 1.2633 (5 digits): tolerance half a unit of its last digit.
 TEST(DragCoefficient, WallFactorAtOneTenth)
 {
     const WallFactors w(0.1);
