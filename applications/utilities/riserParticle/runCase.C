@@ -37,13 +37,7 @@ void writeRow
             riser::forceNamed(name, force) ? f[force] : riser::Vector::Zero().eval()
         );
     }
-    const std::vector<double> values = riser::particleTableValues(row);
-    os  << values[0];
-    for (std::size_t i = 1; i < values.size(); ++i)
-    {
-        os  << ' ' << values[i];
-    }
-    os  << nl;
+    riser::writeParticleTableRow(os, row);
 }
 
 } // End anonymous namespace
@@ -63,17 +57,12 @@ void Foam::runCase
     OFstream table(dir/"particles.dat");
     table.precision(12);
     table
-        << "# riserParticle (mesh-free, lab frame, integrator " << integ.name
-        << "), SI units; relative: to the riser axis and velocity" << nl << '#';
-    for
-    (
-        const std::string& column
-      : riser::particleTableColumns({scene.forceNames.begin(), scene.forceNames.end()})
-    )
-    {
-        table << ' ' << column.c_str();
-    }
-    table << nl;
+        << riser::particleTableHeader
+           (
+               "riserParticle (mesh-free, lab frame, integrator " + integ.name
+             + "), SI units; relative: to the riser axis and velocity",
+               {scene.forceNames.begin(), scene.forceNames.end()}
+           ).c_str();
     OFstream contacts(dir/"contacts.dat");
     contacts.precision(12);
     contacts

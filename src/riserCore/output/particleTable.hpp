@@ -61,6 +61,18 @@ inline std::vector<std::string> particleTableColumns(const std::vector<std::stri
     return c;
 }
 
+//- The table's header: a title line, then the line of column names
+inline std::string particleTableHeader(const std::string& title,
+                                       const std::vector<std::string>& forceNames)
+{
+    std::string header = "# " + title + "\n#";
+    for (const std::string& column : particleTableColumns(forceNames))
+    {
+        header += ' ' + column;
+    }
+    return header + '\n';
+}
+
 //- The row's values, in the order of particleTableColumns
 inline std::vector<double> particleTableValues(const ParticleTableRow& r)
 {
@@ -77,6 +89,20 @@ inline std::vector<double> particleTableValues(const ParticleTableRow& r)
         v.insert(v.end(), {F.x(), F.y(), F.z()});
     }
     return v;
+}
+
+//- Write the row as a line of the table to a stream (std::ostream or
+//  OpenFOAM's Ostream), in the stream's number format
+template<class Stream>
+void writeParticleTableRow(Stream& os, const ParticleTableRow& r)
+{
+    const std::vector<double> values = particleTableValues(r);
+    os << values[0];
+    for (std::size_t i = 1; i < values.size(); ++i)
+    {
+        os << ' ' << values[i];
+    }
+    os << '\n';
 }
 
 } // namespace riser

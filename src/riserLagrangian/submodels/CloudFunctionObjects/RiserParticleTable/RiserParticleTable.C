@@ -24,18 +24,17 @@ Foam::OFstream& Foam::RiserParticleTable<CloudType>::file()
         {
             forceNames.push_back(force.type());
         }
-        std::string header =
-            "# riserParticleTable, SI units; relative: to the riser axis"
-            " and velocity\n#";
-        for (const std::string& column : riser::particleTableColumns(forceNames))
-        {
-            header += ' ' + column;
-        }
+        const std::string header = riser::particleTableHeader
+        (
+            "riserParticleTable, SI units; relative: to the riser axis and"
+            " velocity",
+            forceNames
+        );
         file_ =
             cloudOutputFile
             (
                 this->owner().mesh(), this->owner().name(), typeName,
-                "particles", header + '\n', 0
+                "particles", header, 0
             );
     }
     return file_();
@@ -293,13 +292,7 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
         {
             row.forces.push_back(toCore(F));
         }
-        const std::vector<double> values = riser::particleTableValues(row);
-        os  << values[0];
-        for (std::size_t i = 1; i < values.size(); ++i)
-        {
-            os  << ' ' << values[i];
-        }
-        os  << nl;
+        riser::writeParticleTableRow(os, row);
     }
     cloud.forces().cacheFields(false);
     os.flush();
