@@ -1,0 +1,130 @@
+// riserCore: neighbour search for spheres by cells of side `cutoff` (a cell
+// list; Allen & Tildesley, Computer Simulation of Liquids, 1987, sec. 5.3).
+// Two centres closer than the cutoff lie in the same or in adjacent cells;
+// each pair is visited once, through the cell itself and 13 of its 26
+// neighbours. Only occupied cells are stored (hashed by their integer
+// coordinates), so memory is O(N) however sparse or clustered the centres
+// are; at bounded density a build and a visit cost O(N) (plus an O(N log N)
+// sort), against O(N^2) for all pairs.
+//
+// SPDX-License-Identifier: GPL-3.0-or-later
+#ifndef RISERCORE_GRANULAR_CELLLIST_HPP
+#define RISERCORE_GRANULAR_CELLLIST_HPP
+
+#include "checks.hpp"
+#include "vector.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <unordered_map>
+#include <utility>
+#include <vector>
+
+namespace riser {
+
+class CellList
+{
+public:
+    //- Sort the centres x into cells of side cutoff
+    void build(const std::vector<Vector>& x, double cutoff)
+    {
+        requirePositive("riser::CellList", "cutoff", cutoff);
+        side_ = cutoff;
+        order_.clear();
+        cells_.clear();
+        if (x.empty()) return;
+        lo_ = x[0];
+        for (const Vector& p : x) lo_ = lo_.cwiseMin(p);
+        order_.reserve(x.size());
+        for (std::size_t i = 0; i < x.size(); ++i) order_.emplace_back(cellKey(x[i]), i);
+        std::sort(order_.begin(), order_.end());
+        cells_.reserve(order_.size());
+        for (std::size_t a = 0; a < order_.size();)
+        {
+            std::size_t b = a + 1;
+            while (b < order_.size() && order_[b].first == order_[a].first) ++b;
+            cells_.emplace(order_[a].first, std::make_pair(a, b));
+            a = b;
+        }
+    }
+
+    //- Call f(i, j) once for every pair i != j in the same or adjacent
+    //  cells (every pair closer than the cutoff is among them)
+    template<class PairFunction>
+    void forEachPair(PairFunction&& f) const
+    {
+        static const std::array<std::array<int, 3>, 13> half = {{
+            {{1, 0, 0}}, {{-1, 1, 0}}, {{0, 1, 0}}, {{1, 1, 0}},
+            {{-1, -1, 1}}, {{0, -1, 1}}, {{1, -1, 1}}, {{-1, 0, 1}}, {{0, 0, 1}},
+            {{1, 0, 1}}, {{-1, 1, 1}}, {{0, 1, 1}}, {{1, 1, 1}}
+        }};
+        for (const auto& cell : cells_)
+        {
+            const std::size_t a0 = cell.second.first, a1 = cell.second.second;
+            for (std::size_t a = a0; a < a1; ++a)
+            {
+                for (std::size_t b = a + 1; b < a1; ++b) f(order_[a].second, order_[b].second);
+            }
+            const std::int64_t cx = coordinate(cell.first, 0);
+            const std::int64_t cy = coordinate(cell.first, 1);
+            const std::int64_t cz = coordinate(cell.first, 2);
+            for (const auto& o : half)
+            {
+                if (cx + o[0] < 0 || cy + o[1] < 0 || cz + o[2] < 0) continue;
+                const auto other = cells_.find(pack(cx + o[0], cy + o[1], cz + o[2]));
+                if (other == cells_.end()) continue;
+                for (std::size_t a = a0; a < a1; ++a)
+                {
+                    for (std::size_t b = other->second.first; b < other->second.second; ++b)
+                    {
+                        f(order_[a].second, order_[b].second);
+                    }
+                }
+            }
+        }
+    }
+
+    //- Number of occupied cells
+    std::size_t cells() const { return cells_.size(); }
+
+private:
+    // 21 bits per coordinate: 2 million cells along each axis
+    static constexpr int bits = 21;
+    static constexpr std::int64_t mask = (std::int64_t(1) << bits) - 1;
+
+    static std::uint64_t pack(std::int64_t cx, std::int64_t cy, std::int64_t cz)
+    {
+        return (std::uint64_t(cz) << (2*bits)) | (std::uint64_t(cy) << bits) | std::uint64_t(cx);
+    }
+
+    static std::int64_t coordinate(std::uint64_t key, int k)
+    {
+        return std::int64_t(key >> (k*bits)) & mask;
+    }
+
+    std::uint64_t cellKey(const Vector& p) const
+    {
+        std::int64_t c[3];
+        for (int k = 0; k < 3; ++k)
+        {
+            const double s = std::floor((p[k] - lo_[k])/side_);
+            // NaN and spans of 2^21 cells or more are refused
+            requireInRange("riser::CellList", "(x - x_min)/cutoff", s,
+                           0.0, Bound::closed, double(mask), Bound::open);
+            c[k] = std::int64_t(s);
+        }
+        return pack(c[0], c[1], c[2]);
+    }
+
+    double side_ = 1.0;
+    Vector lo_ = Vector::Zero();
+    std::vector<std::pair<std::uint64_t, std::size_t>> order_;
+    std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> cells_;
+};
+
+} // namespace riser
+
+#endif
