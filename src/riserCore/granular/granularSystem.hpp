@@ -2,8 +2,12 @@
 // no fluid: discrete element method (Cundall & Strack, Geotechnique 29, 47,
 // 1979) with the Hertz–Mindlin law of contact/hertzMindlin.hpp for both
 // kinds of contact (pairs through contact/pairContact.hpp, walls through
-// riser::Wall). Pairs are found by a cell list (granular/cellList.hpp), so a
-// step costs O(N).
+// riser::Wall). Candidate pairs come from a Verlet list (Verlet, Phys. Rev.
+// 159, 98, 1967): the pairs closer than 2 R_max + skin, found by a cell list
+// (granular/cellList.hpp) and rebuilt when some grain has moved more than
+// skin/2 since the last build, so that no pair can come into contact
+// unlisted; a step costs O(N). Each listed pair carries its tangential
+// spring, so a contact's history costs nothing to look up.
 //
 // Time stepping: velocity Verlet,
 //   v(t + dt/2) = v(t) + dt/2 a(t),   x(t + dt) = x(t) + dt v(t + dt/2),
@@ -43,17 +47,23 @@ class GranularSystem
 {
 public:
     //- pairLaw: the law between two grains (both materials the grains');
-    //  wallLaw: between a grain and any wall; g: gravity
+    //  wallLaw: between a grain and any wall; g: gravity; skin: the Verlet
+    //  list's margin as a fraction of the largest radius (cost only: any
+    //  skin > 0 finds every contact)
     GranularSystem(const HertzMindlin& pairLaw, const HertzMindlin& wallLaw,
-                   const Vector& g, bool rotation)
+                   const Vector& g, bool rotation, double skin = 0.4)
     :
-        pairLaw_(pairLaw), wallLaw_(wallLaw), g_(g), rotation_(rotation)
-    {}
+        pairLaw_(pairLaw), wallLaw_(wallLaw), g_(g), rotation_(rotation), skin_(skin)
+    {
+        requirePositive("riser::GranularSystem", "skin", skin);
+    }
 
     //- A wall the grains touch; the caller keeps it alive
     void addWall(const Wall& w)
     {
         walls_.push_back(&w);
+        wallSpring_.assign(grains_.size()*walls_.size(), Vector::Zero());
+        wallTouching_.assign(grains_.size()*walls_.size(), false);
         forcesValid_ = false;
     }
 
@@ -61,7 +71,15 @@ public:
     {
         requirePositive("riser::GranularSystem", "R", p.radius);
         requirePositive("riser::GranularSystem", "m", p.mass);
+        // a new grain joins with no contact history; the list is rebuilt
+        std::vector<Vector> springs(wallSpring_);
+        std::vector<bool> touching(wallTouching_);
         grains_.push_back(p);
+        springs.resize(grains_.size()*walls_.size(), Vector::Zero());
+        touching.resize(grains_.size()*walls_.size(), false);
+        wallSpring_.swap(springs);
+        wallTouching_.swap(touching);
+        listValid_ = false;
         forcesValid_ = false;
     }
 
@@ -81,17 +99,20 @@ public:
     }
 
     //- Pairs and grain-wall contacts in contact now
-    std::size_t pairContacts() const { return pairSpring_.size(); }
-    std::size_t wallContacts() const { return wallSpring_.size(); }
+    std::size_t pairContacts() const { return pairsTouching_; }
+    std::size_t wallContacts() const { return wallsTouching_; }
 
     //- Contacts begun since the start (each counted at its first step)
     long pairContactsBegun() const { return pairBegun_; }
     long wallContactsBegun() const { return wallBegun_; }
 
+    //- Verlet list builds since the start
+    long listBuilds() const { return builds_; }
+
     //- Mean number of grain neighbours in contact, 2 N_pairs / N
     double coordinationNumber() const
     {
-        return grains_.empty() ? 0.0 : 2.0*double(pairSpring_.size())/double(grains_.size());
+        return grains_.empty() ? 0.0 : 2.0*double(pairsTouching_)/double(grains_.size());
     }
 
     //- Largest pair overlap now, relative to the smaller diameter
@@ -126,12 +147,6 @@ public:
 private:
     static double inertia(const Grain& q) { return 0.4*q.mass*q.radius*q.radius; }
 
-    //- Key of the pair (i, j), the same for (j, i)
-    static std::uint64_t key(std::size_t i, std::size_t j)
-    {
-        return (std::uint64_t(std::min(i, j)) << 32) | std::uint64_t(std::max(i, j));
-    }
-
     //- The kept spring turned into the plane normal to n, length kept
     static Vector turned(const Vector& s, const Vector& n)
     {
@@ -151,66 +166,110 @@ private:
         wallImpulse_ += h*wallForce_;
     }
 
+    //- A candidate pair of the Verlet list (i < j) and its spring, kept in
+    //  i's frame (normal from i towards j)
+    struct Candidate
+    {
+        std::uint32_t i, j;
+        Vector spring;
+        bool touching;
+    };
+
+    //- Rebuild the candidate list, carrying over the springs of the pairs
+    //  in contact
+    void buildList()
+    {
+        const std::size_t n = grains_.size();
+        double rMax = 0.0;
+        positions_.resize(n);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            positions_[i] = grains_[i].x;
+            rMax = std::max(rMax, grains_[i].radius);
+        }
+        skinLength_ = skin_*rMax;
+        std::unordered_map<std::uint64_t, Vector> kept;
+        kept.reserve(pairsTouching_ + 1);
+        for (const Candidate& c : list_)
+        {
+            if (c.touching) kept.emplace((std::uint64_t(c.i) << 32) | c.j, c.spring);
+        }
+        list_.clear();
+        cells_.build(positions_, 2.0*rMax + skinLength_);
+        cells_.forEachPair([&](std::size_t a, std::size_t b)
+        {
+            const std::size_t i = std::min(a, b), j = std::max(a, b);
+            const double reach = grains_[i].radius + grains_[j].radius + skinLength_;
+            if ((positions_[j] - positions_[i]).squaredNorm() > reach*reach) return;
+            const auto k = kept.find((std::uint64_t(i) << 32) | j);
+            list_.push_back(Candidate{std::uint32_t(i), std::uint32_t(j),
+                k == kept.end() ? Vector(Vector::Zero()) : k->second, k != kept.end()});
+        });
+        listValid_ = true;
+        ++builds_;
+    }
+
+    //- Has some grain moved more than skin/2 since the list was built?
+    bool listStale() const
+    {
+        const double limit = 0.25*skinLength_*skinLength_;
+        for (std::size_t i = 0; i < grains_.size(); ++i)
+        {
+            if ((grains_[i].x - positions_[i]).squaredNorm() > limit) return true;
+        }
+        return false;
+    }
+
     //- Forces at the current positions; dt: the step that led here (the
     //  springs grow by U_t dt)
     void computeForces(double dt)
     {
         const std::size_t n = grains_.size();
+        require32bit(n);
+        if (!listValid_ || listStale()) buildList();
         force_.assign(n, Vector::Zero());
         torque_.assign(n, Vector::Zero());
         wallForce_.setZero();
         elastic_ = 0.0;
         largestPairOverlap_ = 0.0;
+        pairsTouching_ = 0;
+        wallsTouching_ = 0;
 
-        std::unordered_map<std::uint64_t, Vector> pairs;
-        std::unordered_map<std::uint64_t, Vector> walls;
-        pairs.reserve(pairSpring_.size() + 16);
-        walls.reserve(wallSpring_.size() + 16);
-
-        if (n > 1)
+        for (Candidate& cand : list_)
         {
-            positions_.resize(n);
-            double rMax = 0.0;
-            for (std::size_t i = 0; i < n; ++i)
+            const Grain& a = grains_[cand.i];
+            const Grain& b = grains_[cand.j];
+            const PairGeometry geo = pairGeometry(a.x, a.radius, b.x, b.radius);
+            if (geo.overlap <= 0.0)
             {
-                positions_[i] = grains_[i].x;
-                rMax = std::max(rMax, grains_[i].radius);
+                cand.touching = false;
+                cand.spring.setZero();
+                continue;
             }
-            cells_.build(positions_, 2.0*rMax);
-            cells_.forEachPair([&](std::size_t i, std::size_t j)
+            if (!cand.touching) ++pairBegun_;
+            const Vector U = rotation_
+              ? pairContactVelocity(geo, a.v, a.omega, a.radius, b.v, b.omega, b.radius)
+              : Vector(a.v - b.v);
+            const Vector Ut = U - U.dot(geo.normal)*geo.normal;
+            const Vector spring = turned(cand.spring, geo.normal) + dt*Ut;
+            const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
+            const ContactForce c = pairLaw_.force(body, geo.overlap, geo.normal, U, spring);
+            const Vector F = c.normal + c.tangential;
+            force_[cand.i] += F;
+            force_[cand.j] -= F;
+            if (rotation_)
             {
-                const Grain& a = grains_[i];
-                const Grain& b = grains_[j];
-                const PairGeometry geo = pairGeometry(a.x, a.radius, b.x, b.radius);
-                if (geo.overlap <= 0.0) return;
-                const Vector U = rotation_
-                  ? pairContactVelocity(geo, a.v, a.omega, a.radius, b.v, b.omega, b.radius)
-                  : Vector(a.v - b.v);
-                // the spring belongs to the ordered pair (lower index first)
-                const double sign = i < j ? 1.0 : -1.0;
-                const std::uint64_t k = key(i, j);
-                const auto old = pairSpring_.find(k);
-                if (old == pairSpring_.end()) ++pairBegun_;
-                const Vector kept = old == pairSpring_.end() ? Vector(Vector::Zero()) : Vector(sign*old->second);
-                const Vector Ut = U - U.dot(geo.normal)*geo.normal;
-                const Vector spring = turned(kept, geo.normal) + dt*Ut;
-                const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
-                const ContactForce c = pairLaw_.force(body, geo.overlap, geo.normal, U, spring);
-                const Vector F = c.normal + c.tangential;
-                force_[i] += F;
-                force_[j] -= F;
-                if (rotation_)
-                {
-                    torque_[i] += (a.radius*geo.normal).cross(c.tangential);
-                    torque_[j] += (b.radius*geo.normal).cross(c.tangential);
-                }
-                pairs[k] = sign*c.springAfter;
-                elastic_ += energyOf(body, geo.overlap, c.springAfter, pairLaw_);
-                largestPairOverlap_ = std::max
-                (
-                    largestPairOverlap_, geo.overlap/(2.0*std::min(a.radius, b.radius))
-                );
-            });
+                torque_[cand.i] += (a.radius*geo.normal).cross(c.tangential);
+                torque_[cand.j] += (b.radius*geo.normal).cross(c.tangential);
+            }
+            cand.spring = c.springAfter;
+            cand.touching = true;
+            ++pairsTouching_;
+            elastic_ += energyOf(body, geo.overlap, c.springAfter, pairLaw_);
+            largestPairOverlap_ = std::max
+            (
+                largestPairOverlap_, geo.overlap/(2.0*std::min(a.radius, b.radius))
+            );
         }
 
         for (std::size_t i = 0; i < n; ++i)
@@ -218,29 +277,38 @@ private:
             const Grain& p = grains_[i];
             for (std::size_t w = 0; w < walls_.size(); ++w)
             {
+                const std::size_t k = i*walls_.size() + w;
                 const ContactPoint cp = walls_[w]->contactPoint(p.x, p.radius, t_);
-                if (cp.overlap <= 0.0) continue;
+                if (cp.overlap <= 0.0)
+                {
+                    wallTouching_[k] = false;
+                    wallSpring_[k].setZero();
+                    continue;
+                }
+                if (!wallTouching_[k]) ++wallBegun_;
                 Vector U = p.v - cp.velocity;
                 if (rotation_) U += p.omega.cross(p.radius*cp.normal);
-                const std::uint64_t k = std::uint64_t(i)*walls_.size() + w;
-                const auto old = wallSpring_.find(k);
-                if (old == wallSpring_.end()) ++wallBegun_;
-                const Vector kept = old == wallSpring_.end() ? Vector(Vector::Zero()) : old->second;
                 const Vector Ut = U - U.dot(cp.normal)*cp.normal;
-                const Vector spring = turned(kept, cp.normal) + dt*Ut;
+                const Vector spring = turned(wallSpring_[k], cp.normal) + dt*Ut;
                 const ContactBody body(p.radius, p.mass);
                 const ContactForce c = wallLaw_.force(body, cp.overlap, cp.normal, U, spring);
                 const Vector F = c.normal + c.tangential;
                 force_[i] += F;
                 wallForce_ += F;
                 if (rotation_) torque_[i] += (p.radius*cp.normal).cross(c.tangential);
-                walls[k] = c.springAfter;
+                wallSpring_[k] = c.springAfter;
+                wallTouching_[k] = true;
+                ++wallsTouching_;
                 elastic_ += energyOf(body, cp.overlap, c.springAfter, wallLaw_);
             }
         }
-        pairSpring_.swap(pairs);
-        wallSpring_.swap(walls);
         forcesValid_ = true;
+    }
+
+    static void require32bit(std::size_t n)
+    {
+        requireInRange("riser::GranularSystem", "number of grains", double(n),
+                       0.0, Bound::closed, 4294967295.0, Bound::closed);
     }
 
     static double energyOf(const ContactBody& b, double delta, const Vector& spring,
@@ -256,15 +324,22 @@ private:
     bool rotation_;
     std::vector<const Wall*> walls_;
     std::vector<Grain> grains_;
-    std::vector<Vector> force_, torque_, positions_;
-    std::unordered_map<std::uint64_t, Vector> pairSpring_, wallSpring_;
+    double skin_;
+    double skinLength_ = 0.0;
+    std::vector<Vector> force_, torque_;
+    std::vector<Vector> positions_;     //!< centres at the last list build
+    std::vector<Candidate> list_;
+    std::vector<Vector> wallSpring_;    //!< per grain and wall
+    std::vector<bool> wallTouching_;
+    std::size_t pairsTouching_ = 0, wallsTouching_ = 0;
     CellList cells_;
     Vector wallForce_ = Vector::Zero();
     Vector wallImpulse_ = Vector::Zero();
     double elastic_ = 0.0;
     double largestPairOverlap_ = 0.0;
     double t_ = 0.0;
-    long pairBegun_ = 0, wallBegun_ = 0;
+    long pairBegun_ = 0, wallBegun_ = 0, builds_ = 0;
+    bool listValid_ = false;
     bool forcesValid_ = false;
 };
 
