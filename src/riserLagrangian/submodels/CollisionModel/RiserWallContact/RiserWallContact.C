@@ -139,61 +139,81 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
+Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
+(
+    const parcelType& p
+) const
 {
     const Time& time = this->owner().mesh().time();
     const riser::RiserFlow& flow = carrier_.riser();
     const riser::Wall& wall = carrier_.wall();
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
-    const scalar wallSpeedMax = flow.motion().maxSpeed();
 
+    if (!(p.d() < flow.diameter()))
+    {
+        FatalErrorInFunction
+            << "particle " << p.origId() << " of diameter " << p.d()
+            << " is not smaller than the riser diameter D = "
+            << flow.diameter() << " (constant/riserProperties)"
+            << exit(FatalError);
+    }
+    const scalar gap = wall.distance(toCore(p.position()), t0) - 0.5*p.d();
+    if (p.age() == 0 && gap <= 0)
+    {
+        // injected in this step (a parcel that moved between processors
+        // is older): released touching or overlapping the wall
+        FatalErrorInFunction
+            << "particle " << p.origId() << " (processor " << p.origProc()
+            << ") of diameter " << p.d() << " is released at "
+            << p.position() << " at t = " << t0 << " touching or"
+            << " overlapping the riser wall: overlap " << -gap
+            << " >= 0; release it at least d/2 from the wall"
+            << exit(FatalError);
+    }
+    const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
+    if (gap > speed*dt)
+    {
+        return 0;
+    }
+    const riser::ContactBody body(0.5*p.d(), effectiveMass(p));
+    const scalar tc = law_.contactTime(body, max(speed, SMALL));
+    // as a scalar first: no overflow of the label
+    const scalar needed = ceil(stepsPerContact_*dt/tc);
+    if (!(needed <= maxSubCycles_))
+    {
+        FatalErrorInFunction
+            << "particle " << p.origId() << " (processor " << p.origProc()
+            << ") at " << p.position() << " needs " << needed
+            << " sub-cycles of the step deltaT = " << dt << " to resolve"
+            << " its wall contact (contact time " << tc << " s, "
+            << stepsPerContact_ << " sub-cycles each), more than"
+            << " maxSubCycles = " << maxSubCycles_ << ": reduce deltaT or"
+            << " raise maxSubCycles" << exit(FatalError);
+    }
+    return max(label(needed), label(1));
+}
+
+
+template<class CloudType>
+Foam::label Foam::RiserWallContact<CloudType>::subCycles(const parcelType& p) const
+{
+    return max(nearWallSubCycles(p), label(1));
+}
+
+
+template<class CloudType>
+Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
+{
     label nSub = 1, nNear = 0;
     for (const parcelType& p : this->owner())
     {
-        if (!(p.d() < flow.diameter()))
+        const label n = nearWallSubCycles(p);
+        if (n > 0)
         {
-            FatalErrorInFunction
-                << "particle " << p.origId() << " of diameter " << p.d()
-                << " is not smaller than the riser diameter D = "
-                << flow.diameter() << " (constant/riserProperties)"
-                << exit(FatalError);
+            ++nNear;
+            nSub = max(nSub, n);
         }
-        const scalar gap = wall.distance(toCore(p.position()), t0) - 0.5*p.d();
-        if (p.age() == 0 && gap <= 0)
-        {
-            // injected in this step (a parcel that moved between processors
-            // is older): released touching or overlapping the wall
-            FatalErrorInFunction
-                << "particle " << p.origId() << " (processor " << p.origProc()
-                << ") of diameter " << p.d() << " is released at "
-                << p.position() << " at t = " << t0 << " touching or"
-                << " overlapping the riser wall: overlap " << -gap
-                << " >= 0; release it at least d/2 from the wall"
-                << exit(FatalError);
-        }
-        const scalar speed = mag(p.U()) + wallSpeedMax;
-        if (gap > speed*dt)
-        {
-            continue;
-        }
-        ++nNear;
-        const riser::ContactBody body(0.5*p.d(), effectiveMass(p));
-        const scalar tc = law_.contactTime(body, max(speed, SMALL));
-        // as a scalar first: no overflow of the label
-        const scalar needed = ceil(stepsPerContact_*dt/tc);
-        if (!(needed <= maxSubCycles_))
-        {
-            FatalErrorInFunction
-                << "particle " << p.origId() << " (processor " << p.origProc()
-                << ") at " << p.position() << " needs " << needed
-                << " sub-cycles of the step deltaT = " << dt << " to resolve"
-                << " its wall contact (contact time " << tc << " s, "
-                << stepsPerContact_ << " sub-cycles each), more than"
-                << " maxSubCycles = " << maxSubCycles_ << ": reduce deltaT or"
-                << " raise maxSubCycles" << exit(FatalError);
-        }
-        nSub = max(nSub, label(needed));
     }
     reduce(nSub, maxOp<label>());
     reduce(nNear, sumOp<label>());
