@@ -60,7 +60,13 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createMesh.H"
 
-    carrierFlow carrier(mesh, true);
+    volVectorField U
+    (
+        IOobject("U", runTime.timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
+        mesh,
+        dimensionedVector(dimVelocity, Zero)
+    );
+    carrierFlow carrier(U, true);
     const riser::RiserFlow& flow = carrier.riser();
     const riser::RiserMotion& motion = flow.motion();
     const scalar R = flow.radius();
@@ -88,12 +94,6 @@ int main(int argc, char *argv[])
     };
     const pointField points0(mesh.points());
 
-    volVectorField U
-    (
-        IOobject("U", runTime.timeName(), mesh, IOobject::NO_READ, IOobject::NO_WRITE),
-        mesh,
-        dimensionedVector(dimVelocity, Zero)
-    );
     auto imposeFlow = [&](const scalar time)
     {
         vectorField& Ui = U.primitiveFieldRef();

@@ -22,29 +22,43 @@ namespace Foam
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
-Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
+namespace
+{
+    // The name under which the carrier of field U is registered
+    Foam::word registeredName(const Foam::volVectorField& U)
+    {
+        return Foam::carrierFlow::typeName + '(' + U.name() + ')';
+    }
+}
+
+
+Foam::carrierFlow::carrierFlow
+(
+    const volVectorField& U,
+    const bool forceInterpolated
+)
 :
     regIOobject
     (
         IOobject
         (
-            typeName,
-            mesh.time().constant(),
-            mesh,
+            registeredName(U),
+            U.mesh().time().constant(),
+            U.mesh(),
             IOobject::NO_READ,
             IOobject::NO_WRITE
         )
     ),
-    mesh_(mesh),
-    UName_("U"),
+    mesh_(U.mesh()),
+    U_(U),
     evaluation_(evaluation::interpolated),
     frame_(simulationFrame::lab)
 {
     IOobject io
     (
         "riserProperties",
-        mesh.time().constant(),
-        mesh,
+        mesh_.time().constant(),
+        mesh_,
         IOobject::MUST_READ,
         IOobject::NO_WRITE,
         false
@@ -79,16 +93,15 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
                  {"interpolated", evaluation::interpolated}}
             );
         }
-        UName_ = dict.lookupOrDefault<word>("U", "U");
 
         // a computed flow is the mesh's: the analytic one would replace it
         const dictionary& solvers =
-            static_cast<const fvSolution&>(mesh).subOrEmptyDict("solvers");
-        if (exact() && !forceInterpolated && solvers.found(UName_))
+            static_cast<const fvSolution&>(mesh_).subOrEmptyDict("solvers");
+        if (exact() && !forceInterpolated && solvers.found(U_.name()))
         {
             FatalIOErrorInFunction(dict)
                 << "entry 'carrier' = exact, but system/fvSolution has a solver"
-                << " for the carrier " << UName_ << ": a computed flow must be"
+                << " for the carrier " << U_.name() << ": a computed flow must be"
                 << " interpolated (set carrier interpolated)"
                 << exit(FatalIOError);
         }
@@ -98,8 +111,8 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
         evaluation_ = evaluation::interpolated;
     }
 
-    Info<< "Carrier flow: "
-        << (exact() ? "exact (analytic riser)" : "interpolated from U")
+    Info<< "Carrier flow of " << U_.name() << ": "
+        << (exact() ? "exact (analytic riser)" : "interpolated")
         << (frame_ == simulationFrame::riser ? ", riser frame" : "")
         << endl;
 }
@@ -107,14 +120,16 @@ Foam::carrierFlow::carrierFlow(const fvMesh& mesh, const bool forceInterpolated)
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::carrierFlow& Foam::carrierFlow::New(const fvMesh& mesh)
+Foam::carrierFlow& Foam::carrierFlow::New(const volVectorField& U)
 {
-    if (!mesh.foundObject<carrierFlow>(typeName))
+    const fvMesh& mesh = U.mesh();
+    const word name(registeredName(U));
+    if (!mesh.foundObject<carrierFlow>(name))
     {
-        carrierFlow* ptr = new carrierFlow(mesh);
+        carrierFlow* ptr = new carrierFlow(U);
         ptr->store();
     }
-    return mesh.lookupObjectRef<carrierFlow>(typeName);
+    return mesh.lookupObjectRef<carrierFlow>(name);
 }
 
 
@@ -152,7 +167,7 @@ riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
 
     checkedEntry::allowedKeys
     (
-        dict, {"D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier", "U"}
+        dict, {"D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier"}
     );
     const scalar D =
         dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
@@ -207,7 +222,7 @@ const riser::RiserMotion& Foam::carrierFlow::riserMotion() const
 
 Foam::tmp<Foam::volVectorField> Foam::carrierFlow::buildVorticity() const
 {
-    return fvc::curl(mesh_.lookupObject<volVectorField>(UName_));
+    return fvc::curl(U_);
 }
 
 
@@ -263,13 +278,12 @@ Foam::tmp<Foam::volVectorField> Foam::carrierFlow::meshVelocity() const
 Foam::tmp<Foam::volVectorField>
 Foam::carrierFlow::buildMaterialDerivative() const
 {
-    const volVectorField& U = mesh_.lookupObject<volVectorField>(UName_);
     if (mesh_.moving())
     {
         // convect with the velocity relative to the moving cells
-        return fvc::ddt(U) + ((U - meshVelocity()) & fvc::grad(U));
+        return fvc::ddt(U_) + ((U_ - meshVelocity()) & fvc::grad(U_));
     }
-    return fvc::ddt(U) + (U & fvc::grad(U));
+    return fvc::ddt(U_) + (U_ & fvc::grad(U_));
 }
 
 
@@ -296,7 +310,7 @@ void Foam::carrierFlow::cache
             (
                 interpolation<vector>::New
                 (
-                    interpolationSchemes.get<word>(UName_),
+                    interpolationSchemes.get<word>(U_.name()),
                     *c.field
                 ).ptr()
             );

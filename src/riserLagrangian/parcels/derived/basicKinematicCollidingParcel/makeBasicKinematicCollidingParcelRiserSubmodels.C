@@ -3,9 +3,10 @@
   License: GPL-3.0-or-later
 
 Description
-    Registers the riser submodels for the stock colliding cloud
-    basicKinematicCollidingCloud, so that icoUncoupledKinematicParcelFoam,
-    icoUncoupledKinematicParcelDyMFoam and DPMFoam find them after
+    Registers the riser forces and the riser collision submodels for the
+    stock colliding cloud basicKinematicCollidingCloud, so that
+    icoUncoupledKinematicParcelFoam, icoUncoupledKinematicParcelDyMFoam,
+    DPMFoam and DPMDyMFoam find them after
     libs ("libriserLagrangian.so"); in system/controlDict.
 
 \*---------------------------------------------------------------------------*/
@@ -15,6 +16,7 @@ Description
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
-makeRiserSubmodels(basicKinematicCollidingCloud);
+makeRiserForces(basicKinematicCollidingCloud);
+makeRiserCollisionSubmodels(basicKinematicCollidingCloud);
 
 // ************************************************************************* //

@@ -40,7 +40,8 @@ makeParcelPatchInteractionModels(basicRiserCloud);
 makeParcelStochasticCollisionModels(basicRiserCloud);
 makeParcelSurfaceFilmModels(basicRiserCloud);
 
-makeRiserSubmodels(basicRiserCloud);
+makeRiserForces(basicRiserCloud);
+makeRiserCollisionSubmodels(basicRiserCloud);
 makeParticleForceModelType(RiserBassetForce, basicRiserCloud);
 
 // ************************************************************************* //

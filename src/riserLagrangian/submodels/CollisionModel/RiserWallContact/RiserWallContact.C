@@ -92,7 +92,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 )
 :
     CollisionModel<CloudType>(dict, owner, typeName),
-    carrier_(carrierFlow::New(owner.mesh())),
+    carrier_(carrierFlow::New(owner.U())),
     law_(readLaw()),
     rotation_(this->coeffDict().lookupOrDefault("rotation", Switch(false))),
     stepsPerContact_

@@ -176,7 +176,7 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
-    carrier_(carrierFlow::New(mesh)),
+    carrier_(carrierFlow::New(owner.U())),
     coefficient_
     (
         checkedEntry::choice<riser::BassetModel>

@@ -39,7 +39,7 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
-    carrier_(carrierFlow::New(mesh)),
+    carrier_(carrierFlow::New(owner.U())),
     law_(modelEntries::dragLaw(this->coeffs())),
     pipeDiameter_
     (

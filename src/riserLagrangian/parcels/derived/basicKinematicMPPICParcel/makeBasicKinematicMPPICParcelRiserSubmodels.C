@@ -1,0 +1,21 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+
+Description
+    Registers the riser forces for the stock MPPIC cloud
+    basicKinematicMPPICCloud, so that MPPICFoam and MPPICDyMFoam find them
+    after libs ("libriserLagrangian.so"); in system/controlDict. The cloud
+    does not collide: riserWallContact and riserParticleTable are not
+    available for it (makeRiserSubmodels.H).
+
+\*---------------------------------------------------------------------------*/
+
+#include "basicKinematicMPPICCloud.H"
+#include "makeRiserSubmodels.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+makeRiserForces(basicKinematicMPPICCloud);
+
+// ************************************************************************* //

@@ -1,0 +1,22 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+
+Description
+    Registers the riser forces for the stock kinematic cloud
+    basicKinematicCloud, so that uncoupledKinematicParcelFoam and
+    uncoupledKinematicParcelDyMFoam find them after
+    libs ("libriserLagrangian.so"); in system/controlDict. The cloud does
+    not collide: riserWallContact and riserParticleTable are not available
+    for it (makeRiserSubmodels.H).
+
+\*---------------------------------------------------------------------------*/
+
+#include "basicKinematicCloud.H"
+#include "makeRiserSubmodels.H"
+
+// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+makeRiserForces(basicKinematicCloud);
+
+// ************************************************************************* //
