@@ -14,7 +14,9 @@ compares, for the cloud kinematicCloud:
     injected the particle, 0 in a serial run);
   - the contact tables (riserWallContact/contacts.dat), when the whole run
     has one: the same number of contacts, their start and end times within
-    <tolerance> relative to the time.
+    <tolerance> relative to the time;
+  - the particles' wall-contact counts written at <time> (wallContacts),
+    when the whole run wrote them: equal, so that a restart read them back.
 Prints the largest differences and exits non-zero on a failure.
 
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -89,18 +91,32 @@ def contact_difference(whole, other):
     return worst, len(a)
 
 
+def trace_difference(whole, other, time):
+    """The wall-contact counts at time (the whole run's total); raises
+    unless they are the whole run's."""
+    path = os.path.join(time, "lagrangian", CLOUD, "wallContacts")
+    if not os.path.exists(os.path.join(whole, path)):
+        return 0
+    a = foamfields.read_scalars(os.path.join(whole, path))
+    b = foamfields.read_scalars(os.path.join(other, path))
+    if a != b:
+        raise AssertionError("wallContacts at %s: %s, %s in the whole run" % (time, b, a))
+    return int(sum(a))
+
+
 def main(argv):
     whole, other, time, tolerance = argv[1], argv[2], argv[3], float(argv[4])
     try:
         state = state_difference(whole, other, time)
         table, lift = table_difference(whole, other, max(tolerance, 1e-11))
         contact, contacts = contact_difference(whole, other)
+        counted = trace_difference(whole, other, time)
     except AssertionError as failure:
         print("FAILED: %s" % failure)
         return 1
     print("%s against %s: state at %s %.2e relative; particle table %.2e (lift %.2e);"
-          " %d contacts, times %.2e relative" % (other, whole, time, state, table, lift,
-                                                 contacts, contact))
+          " %d contacts, times %.2e relative; %d counted by the particles"
+          % (other, whole, time, state, table, lift, contacts, contact, counted))
     ok = state <= tolerance and table <= max(tolerance, 1e-11) and contact <= tolerance
     print("ok" if ok else "FAILED: above the tolerance %g" % tolerance)
     return 0 if ok else 1

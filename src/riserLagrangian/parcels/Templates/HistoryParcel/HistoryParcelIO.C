@@ -7,6 +7,7 @@
 #include "IOstreams.H"
 #include "IOField.H"
 #include "CompactIOField.H"
+#include "vectorFieldIOField.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -37,7 +38,9 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
         label steps;
         vector slip0;
         List<vector> window, tail;
-        is >> steps >> slip0 >> window >> tail >> UNode_ >> historyKnown_;
+        is >> steps >> slip0 >> window >> tail >> UNode_ >> historyKnown_
+            >> wallContacts_.count >> wallContacts_.overlapMax
+            >> wallContacts_.impactSpeed;
         setHistory(steps, slip0, window, tail);
     }
 
@@ -90,6 +93,40 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 
     ParcelType::readFields(c);
 
+    // the wall-contact trace: zero for a cloud written without it
+    IOobject contactsIO(c.fieldIOobject("wallContacts", IOobject::MUST_READ));
+    if (contactsIO.typeHeaderOk<IOField<label>>(true))
+    {
+        IOField<label> contacts(contactsIO, valid);
+        c.checkFieldIOobject(c, contacts);
+        IOField<scalar> overlapMax
+        (
+            c.fieldIOobject("wallOverlapMax", IOobject::MUST_READ),
+            valid
+        );
+        c.checkFieldIOobject(c, overlapMax);
+        IOField<scalar> impactSpeed
+        (
+            c.fieldIOobject("wallImpactSpeed", IOobject::MUST_READ),
+            valid
+        );
+        c.checkFieldIOobject(c, impactSpeed);
+
+        label i = 0;
+        for (HistoryParcel<ParcelType>& p : c)
+        {
+            p.wallContacts_.count = contacts[i];
+            p.wallContacts_.overlapMax = overlapMax[i];
+            p.wallContacts_.impactSpeed = impactSpeed[i];
+            ++i;
+        }
+    }
+    else if (valid)
+    {
+        Info<< "    " << c.name() << ": no wall-contact trace written at "
+            << c.time().timeName() << "; the counts start there" << endl;
+    }
+
     // clouds written without histories (another solver, or initial
     // particles): each particle starts its history at its next step
     if (valid && !histories)
@@ -132,6 +169,31 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 
 template<class ParcelType>
 template<class CloudType>
+void Foam::HistoryParcel<ParcelType>::collectFields
+(
+    const CloudType& c,
+    labelField& steps,
+    vectorField& slip0,
+    labelField& contacts,
+    scalarField& overlapMax,
+    scalarField& impactSpeed
+)
+{
+    label i = 0;
+    for (const HistoryParcel<ParcelType>& p : c)
+    {
+        steps[i] = p.history_.steps;
+        slip0[i] = p.history_.slip0;
+        contacts[i] = p.wallContacts_.count;
+        overlapMax[i] = p.wallContacts_.overlapMax;
+        impactSpeed[i] = p.wallContacts_.impactSpeed;
+        ++i;
+    }
+}
+
+
+template<class ParcelType>
+template<class CloudType>
 void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
 {
     ParcelType::writeFields(c);
@@ -141,6 +203,19 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
 
     IOField<label> steps(c.fieldIOobject("historySteps", IOobject::NO_READ), np);
     IOField<vector> slip0(c.fieldIOobject("historySlip0", IOobject::NO_READ), np);
+    IOField<label> contacts(c.fieldIOobject("wallContacts", IOobject::NO_READ), np);
+    IOField<scalar> overlapMax
+    (
+        c.fieldIOobject("wallOverlapMax", IOobject::NO_READ),
+        np
+    );
+    IOField<scalar> impactSpeed
+    (
+        c.fieldIOobject("wallImpactSpeed", IOobject::NO_READ),
+        np
+    );
+    collectFields(c, steps, slip0, contacts, overlapMax, impactSpeed);
+
     vectorFieldCompactIOField window
     (
         c.fieldIOobject("historyWindow", IOobject::NO_READ),
@@ -155,8 +230,6 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     label i = 0;
     for (const HistoryParcel<ParcelType>& p : c)
     {
-        steps[i] = p.history_.steps;
-        slip0[i] = p.history_.slip0;
         window[i] = p.windowList();
         tail[i] = List<vector>(p.history_.tail.begin(), p.history_.tail.end());
         ++i;
@@ -166,6 +239,32 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     slip0.write(valid);
     window.write(valid);
     tail.write(valid);
+    contacts.write(valid);
+    overlapMax.write(valid);
+    impactSpeed.write(valid);
+}
+
+
+template<class ParcelType>
+template<class CloudType>
+void Foam::HistoryParcel<ParcelType>::writeObjects
+(
+    const CloudType& c,
+    objectRegistry& obr
+)
+{
+    ParcelType::writeObjects(c, obr);
+
+    const label np = c.size();
+    collectFields
+    (
+        c,
+        cloud::createIOField<label>("historySteps", np, obr),
+        cloud::createIOField<vector>("historySlip0", np, obr),
+        cloud::createIOField<label>("wallContacts", np, obr),
+        cloud::createIOField<scalar>("wallOverlapMax", np, obr),
+        cloud::createIOField<scalar>("wallImpactSpeed", np, obr)
+    );
 }
 
 
@@ -188,6 +287,19 @@ void Foam::HistoryParcel<ParcelType>::writeProperties
     (
         os, "historySlip0", history_.slip0, namesOnly, delim, filters
     );
+    ParcelType::writeProperty
+    (
+        os, "wallContacts", wallContacts_.count, namesOnly, delim, filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "wallOverlapMax", wallContacts_.overlapMax, namesOnly, delim, filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "wallImpactSpeed", wallContacts_.impactSpeed, namesOnly, delim,
+        filters
+    );
 }
 
 
@@ -207,7 +319,10 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE
         << List<vector>(p.history_.tail.begin(), p.history_.tail.end())
         << token::SPACE << p.UNode_
-        << token::SPACE << p.historyKnown_;
+        << token::SPACE << p.historyKnown_
+        << token::SPACE << p.wallContacts_.count
+        << token::SPACE << p.wallContacts_.overlapMax
+        << token::SPACE << p.wallContacts_.impactSpeed;
 
     os.check(FUNCTION_NAME);
     return os;

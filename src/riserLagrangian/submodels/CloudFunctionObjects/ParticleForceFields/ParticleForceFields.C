@@ -30,7 +30,10 @@ Foam::ParticleForceFields<CloudType>::ParticleForceFields
     const ParticleForceFields<CloudType>& pff
 )
 :
-    CloudFunctionObject<CloudType>(pff)
+    CloudFunctionObject<CloudType>(pff),
+    names_(pff.names_),
+    values_(pff.values_),
+    timeIndex_(pff.timeIndex_)
 {}
 
 
@@ -71,9 +74,34 @@ void Foam::ParticleForceFields<CloudType>::write()
     }
     forces.cacheFields(false);
 
-    for (const auto& field : fields)
+    names_.setSize(fields.size());
+    values_.setSize(fields.size());
+    forAll(fields, i)
     {
-        field.write(cloud.size() > 0);
+        fields[i].write(cloud.size() > 0);
+        names_[i] = fields[i].name();
+        values_[i].transfer(fields[i]);
+    }
+    timeIndex_ = cloud.db().time().timeIndex();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::ParticleForceFields<CloudType>::writeObjects
+(
+    objectRegistry& obr
+) const
+{
+    const CloudType& cloud = this->owner();
+    if (timeIndex_ != cloud.db().time().timeIndex())
+    {
+        return;
+    }
+    forAll(names_, i)
+    {
+        cloud::createIOField<vector>(names_[i], cloud.size(), obr) = values_[i];
     }
 }
 

@@ -173,20 +173,48 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::RiserParticleTable<CloudType>::write()
+Foam::scalarField Foam::RiserParticleTable<CloudType>::origins() const
 {
-    CloudType& cloud = this->owner();
-    IOField<scalar> origins
-    (
-        cloud.fieldIOobject("liftOrigin", IOobject::NO_READ),
-        cloud.size()
-    );
+    const CloudType& cloud = this->owner();
+    scalarField z0(cloud.size());
     label i = 0;
     for (const auto& p : cloud)
     {
-        origins[i++] = lift_[labelPair(p.origProc(), p.origId())].x();
+        z0[i++] = lift_[labelPair(p.origProc(), p.origId())].x();
     }
-    origins.write(cloud.size() > 0);
+    return z0;
+}
+
+
+template<class CloudType>
+void Foam::RiserParticleTable<CloudType>::write()
+{
+    const CloudType& cloud = this->owner();
+    IOField<scalar>
+    (
+        cloud.fieldIOobject("liftOrigin", IOobject::NO_READ),
+        origins()
+    ).write(cloud.size() > 0);
+}
+
+
+template<class CloudType>
+void Foam::RiserParticleTable<CloudType>::writeObjects
+(
+    objectRegistry& obr
+) const
+{
+    // on every processor or none: vtkCloud gathers the fields by name
+    const CloudType& cloud = this->owner();
+    bool known = true;
+    for (const auto& p : cloud)
+    {
+        known = known && lift_.found(labelPair(p.origProc(), p.origId()));
+    }
+    if (returnReduce(known, andOp<bool>()))
+    {
+        cloud::createIOField<scalar>("liftOrigin", cloud.size(), obr) = origins();
+    }
 }
 
 

@@ -7,6 +7,7 @@
 #include "modelEntries.H"
 #include "cloudOutputFile.H"
 #include "coreVector.H"
+#include "HistoryParcel.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -275,6 +276,7 @@ void Foam::RiserWallContact<CloudType>::collide()
                     << spin.x() << ' ' << spin.y() << ' ' << spin.z() << ' '
                     << e.normalSpeedIn << ' '
                     << -(Uout & fromCore(cp.normal)) << endl;
+                recordWallContact(p, e.overlapMax, e.normalSpeedIn);
                 events_.erase(iter);
             }
             // no record accessed: update() drops the tangential spring
