@@ -196,7 +196,8 @@ def _number(field):
 
 def wall_contact_case(case, D, radius, rho, E, nu, wall_E, wall_nu, e_n, e_t, mu,
                       velocities, rotation=False, dt=1e-5, end=2e-4,
-                      steps_per_contact=400, normal_force="tensionAllowed", positions=None):
+                      steps_per_contact=400, normal_force="tensionAllowed", positions=None,
+                      pairs=None, diameters=None):
     """A case in which particles fly at the riser wall of the riserWallContact
     model with no fluid forces (the sphere-wall benchmarks of Chung & Ooi
     2011 through the OpenFOAM wall model), run by icoUncoupledKinematicParcelFoam.
@@ -210,7 +211,9 @@ def wall_contact_case(case, D, radius, rho, E, nu, wall_E, wall_nu, e_n, e_t, mu
     contact already overlapped.
 
     velocities: list of (v_x, v_z) pairs, v_x towards the wall (> 0);
-    positions: list of (x, y, z) to use instead of the default starts."""
+    positions: list of (x, y, z) to use instead of the default starts;
+    pairs: (e_n, e_t, mu) of particle-particle contact, or None for none;
+    diameters: one diameter per particle instead of 2 radius for all."""
     R = 0.5 * D
     half = 0.6 * D
     height = 0.4 * D * max(len(velocities), 1) + 4 * radius
@@ -281,7 +284,7 @@ boundaryField { walls { type noSlip; } }
                 type        fixedValue;
                 fixedValueDistribution { value %(d).17g; }
             }
-        }""" % {"i": i, "vx": vx, "vz": vz, "d": 2 * radius})
+        }""" % {"i": i, "vx": vx, "vz": vz, "d": diameters[i] if diameters else 2 * radius})
     ff.write_dictionary(case + "/constant/kinematicCloudProperties", """
 solution
 {
@@ -310,13 +313,16 @@ subModels
         friction %(mu).17g;
         normalForce %(nf)s;
         rotation %(rot)s;
-        stepsPerContact %(spc)d;
+        stepsPerContact %(spc)d;%(pairs)s
     }
 }
 cloudFunctions {}
 """ % {"rho": rho, "E": E, "nu": nu, "inj": "".join(injectors), "wE": wall_E, "wnu": wall_nu,
        "en": e_n, "et": e_t, "mu": mu, "nf": normal_force, "rot": "on" if rotation else "off",
-       "spc": steps_per_contact})
+       "spc": steps_per_contact,
+       "pairs": "" if pairs is None else
+       "\n        pairs { normalRestitution %.17g; tangentialRestitution %.17g; friction %.17g; }"
+       % pairs})
 
 
 def wall_contacts(case):

@@ -8,6 +8,10 @@
 #include "cloudOutputFile.H"
 #include "coreVector.H"
 #include "HistoryParcel.H"
+#include "granular/cellList.hpp"
+
+#include <numeric>
+#include <vector>
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -104,8 +108,31 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     (
         checkedEntry::count(this->coeffDict(), "maxSubCycles", 1, 100000000, 100000)
     ),
-    addedMassCoeff_(readAddedMassCoeff())
+    addedMassCoeff_(readAddedMassCoeff()),
+    pairsInContact_(0)
 {
+    if (this->coeffDict().found("pairs"))
+    {
+        if (Pstream::parRun())
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "entry 'pairs' (particle-particle contact) in a parallel"
+                << " run: pair contact runs on one processor in this version"
+                << " (pairs across processor boundaries are not exchanged);"
+                << " run serially or remove 'pairs'" << exit(FatalIOError);
+        }
+        pairLaw_.reset
+        (
+            new riser::HertzMindlin
+            (
+                modelEntries::pairContactParameters
+                (
+                    this->coeffDict(), this->owner().constProps().dict()
+                )
+            )
+        );
+    }
+
     // the riser must exist: FatalError here rather than at the first step
     carrier_.riser();
 
@@ -132,6 +159,9 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     stepsPerContact_(cm.stepsPerContact_),
     maxSubCycles_(cm.maxSubCycles_),
     addedMassCoeff_(cm.addedMassCoeff_),
+    pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
+    needs_(cm.needs_),
+    pairsInContact_(cm.pairsInContact_),
     events_(cm.events_),
     lost_(cm.lost_)
 {}
@@ -181,35 +211,141 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
     const scalar tc = law_.contactTime(body, max(speed, SMALL));
     // as a scalar first: no overflow of the label
     const scalar needed = ceil(stepsPerContact_*dt/tc);
+    checkNeeded(needed, p, tc, "wall contact");
+    return max(label(needed), label(1));
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::checkNeeded
+(
+    const scalar needed,
+    const parcelType& p,
+    const scalar tc,
+    const word& what
+) const
+{
     if (!(needed <= maxSubCycles_))
     {
         FatalErrorInFunction
             << "particle " << p.origId() << " (processor " << p.origProc()
             << ") at " << p.position() << " needs " << needed
-            << " sub-cycles of the step deltaT = " << dt << " to resolve"
-            << " its wall contact (contact time " << tc << " s, "
+            << " sub-cycles of the step deltaT = "
+            << this->owner().mesh().time().deltaTValue() << " to resolve"
+            << " its " << what << " (contact time " << tc << " s, "
             << stepsPerContact_ << " sub-cycles each), more than"
             << " maxSubCycles = " << maxSubCycles_ << ": reduce deltaT or"
             << " raise maxSubCycles" << exit(FatalError);
     }
-    return max(label(needed), label(1));
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
+{
+    const scalar dt = this->owner().mesh().time().deltaTValue();
+
+    std::vector<const parcelType*> parcels;
+    parcels.reserve(this->owner().size());
+    std::vector<label> need;
+    need.reserve(this->owner().size());
+    for (const parcelType& p : this->owner())
+    {
+        parcels.push_back(&p);
+        need.push_back(nearWallSubCycles(p));
+    }
+    const std::size_t n = parcels.size();
+
+    if (pairLaw_.valid() && n > 1)
+    {
+        // clusters of particles that may touch within the step: union-find
+        std::vector<std::size_t> root(n);
+        std::iota(root.begin(), root.end(), std::size_t(0));
+        auto find = [&root](std::size_t i)
+        {
+            while (root[i] != i)
+            {
+                root[i] = root[root[i]];
+                i = root[i];
+            }
+            return i;
+        };
+
+        std::vector<riser::Vector> x(n);
+        scalar rMax = 0, uMax = 0;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            x[i] = toCore(parcels[i]->position());
+            rMax = max(rMax, 0.5*parcels[i]->d());
+            uMax = max(uMax, mag(parcels[i]->U()));
+        }
+        riser::CellList cells;
+        cells.build(x, 2*rMax + 2*uMax*dt + SMALL);
+        cells.forEachPair([&](std::size_t i, std::size_t j)
+        {
+            const parcelType& p = *parcels[i];
+            const parcelType& q = *parcels[j];
+            const scalar gap = (x[j] - x[i]).norm() - 0.5*(p.d() + q.d());
+            const scalar speed = mag(p.U()) + mag(q.U());
+            if (gap > speed*dt)
+            {
+                return;
+            }
+            const riser::ContactBody body =
+                riser::pairBody
+                (
+                    0.5*p.d(), effectiveMass(p), 0.5*q.d(), effectiveMass(q)
+                );
+            const scalar tc = pairLaw_->contactTime(body, max(speed, SMALL));
+            const scalar needed = ceil(stepsPerContact_*dt/tc);
+            checkNeeded(needed, p, tc, "contact with particle " + Foam::name(q.origId()));
+            const label k = max(label(needed), label(1));
+            need[i] = max(need[i], k);
+            need[j] = max(need[j], k);
+            root[find(i)] = find(j);
+        });
+        std::vector<label> clusterNeed(n, 0);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            clusterNeed[find(i)] = max(clusterNeed[find(i)], need[i]);
+        }
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            need[i] = clusterNeed[find(i)];
+        }
+    }
+
+    needs_.clear();
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        needs_.set(labelPair(parcels[i]->origProc(), parcels[i]->origId()), need[i]);
+    }
 }
 
 
 template<class CloudType>
 Foam::label Foam::RiserWallContact<CloudType>::subCycles(const parcelType& p) const
 {
-    return max(nearWallSubCycles(p), label(1));
+    const auto iter = needs_.cfind(labelPair(p.origProc(), p.origId()));
+    if (!iter.found())
+    {
+        FatalErrorInFunction
+            << "particle " << p.origId() << " (processor " << p.origProc()
+            << ") was not in the cloud when its need of sub-cycles was"
+            << " prepared" << exit(FatalError);
+    }
+    return max(*iter, label(1));
 }
 
 
 template<class CloudType>
 Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
 {
+    prepareSubCycles();
     label nSub = 1, nNear = 0;
     for (const parcelType& p : this->owner())
     {
-        const label n = nearWallSubCycles(p);
+        const label n = needs_[labelPair(p.origProc(), p.origId())];
         if (n > 0)
         {
             ++nNear;
@@ -221,10 +357,115 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
 
     if (nNear)
     {
-        Info<< "    riserWallContact: " << nNear << " particle(s) near the wall"
-            << endl;
+        Info<< "    riserWallContact: " << nNear << " particle(s) near "
+            << (pairLaw_.valid() ? "a contact" : "the wall") << endl;
     }
     return nSub;
+}
+
+
+namespace Foam
+{
+    //- The tangential spring of a contact turned into the plane normal to n
+    //  (its length kept) and grown by the tangential relative velocity of
+    //  the contact point over dt
+    inline vector advancedSpring
+    (
+        const vector& spring,
+        const vector& n,
+        const vector& U,
+        const scalar dt
+    )
+    {
+        const vector inPlane = spring - (spring & n)*n;
+        const scalar magInPlane = mag(inPlane);
+        return
+            (magInPlane > VSMALL ? mag(spring)/magInPlane*inPlane : vector::zero)
+          + (U - (U & n)*n)*dt;
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::collidePairs()
+{
+    const scalar dt = this->owner().mesh().time().deltaTValue();
+
+    std::vector<parcelType*> parcels;
+    std::vector<riser::Vector> x;
+    parcels.reserve(this->owner().size());
+    x.reserve(this->owner().size());
+    scalar rMax = 0;
+    for (parcelType& p : this->owner())
+    {
+        parcels.push_back(&p);
+        x.push_back(toCore(p.position()));
+        rMax = max(rMax, 0.5*p.d());
+    }
+    pairsInContact_ = 0;
+    if (parcels.size() < 2)
+    {
+        return;
+    }
+
+    riser::CellList cells;
+    cells.build(x, 2*rMax);
+    cells.forEachPair([&](std::size_t a, std::size_t b)
+    {
+        // the pair in a fixed order, so that the spring is read in one frame
+        const bool aFirst =
+            labelPair(parcels[a]->origProc(), parcels[a]->origId())
+          < labelPair(parcels[b]->origProc(), parcels[b]->origId());
+        parcelType& p = aFirst ? *parcels[a] : *parcels[b];
+        parcelType& q = aFirst ? *parcels[b] : *parcels[a];
+        const scalar Rp = 0.5*p.d(), Rq = 0.5*q.d();
+        const riser::PairGeometry geo =
+            riser::pairGeometry(toCore(p.position()), Rp, toCore(q.position()), Rq);
+        if (geo.overlap <= 0)
+        {
+            return;
+        }
+        const vector n = fromCore(geo.normal);
+        const vector U =
+            rotation_
+          ? fromCore
+            (
+                riser::pairContactVelocity
+                (
+                    geo, toCore(p.U()), toCore(p.omega()), Rp,
+                    toCore(q.U()), toCore(q.omega()), Rq
+                )
+            )
+          : p.U() - q.U();
+
+        // the spring in p's frame (n from p to q); q keeps its negative
+        vector& spring =
+            p.collisionRecords().matchPairRecord(q.origProc(), q.origId()).collisionData();
+        spring = advancedSpring(spring, n, U, dt);
+
+        const scalar mp = effectiveMass(p), mq = effectiveMass(q);
+        const riser::ContactForce c =
+            pairLaw_->force
+            (
+                riser::pairBody(Rp, mp, Rq, mq),
+                geo.overlap, geo.normal, toCore(U), toCore(spring)
+            );
+        spring = fromCore(c.springAfter);
+        q.collisionRecords().matchPairRecord(p.origProc(), p.origId()).collisionData() =
+            -spring;
+
+        const vector F = fromCore(c.normal) + fromCore(c.tangential);
+        // each parcel divides f by its m_p: the force on m_p + C_A m_f
+        p.f() += (p.mass()/mp)*F;
+        q.f() -= (q.mass()/mq)*F;
+        if (rotation_)
+        {
+            const vector Ft = fromCore(c.tangential);
+            p.torque() += (Rp*n) ^ Ft;
+            q.torque() += (Rq*n) ^ Ft;
+        }
+        ++pairsInContact_;
+    });
 }
 
 
@@ -279,8 +520,7 @@ void Foam::RiserWallContact<CloudType>::collide()
                 recordWallContact(p, e.overlapMax, e.normalSpeedIn);
                 events_.erase(iter);
             }
-            // no record accessed: update() drops the tangential spring
-            p.collisionRecords().update();
+            // no record accessed: update() below drops the tangential spring
             continue;
         }
 
@@ -290,11 +530,7 @@ void Foam::RiserWallContact<CloudType>::collide()
         // the tangential spring, kept in the current tangent plane
         vector& spring =
             p.collisionRecords().matchWallRecord(0.99*Rp*n, Rp).collisionData();
-        const vector inPlane = spring - (spring & n)*n;
-        const scalar magInPlane = mag(inPlane);
-        spring =
-            (magInPlane > VSMALL ? mag(spring)/magInPlane*inPlane : vector::zero)
-          + (U - (U & n)*n)*dt;
+        spring = advancedSpring(spring, n, U, dt);
 
         const scalar mEff = effectiveMass(p);
         const riser::ContactForce c =
@@ -313,7 +549,6 @@ void Foam::RiserWallContact<CloudType>::collide()
         {
             p.torque() = (Rp*n) ^ Ft;
         }
-        p.collisionRecords().update();
 
         auto iter = events_.find(key);
         if (!iter.found())
@@ -334,6 +569,16 @@ void Foam::RiserWallContact<CloudType>::collide()
             e.overlapMax = max(e.overlapMax, overlap);
             e.normalForceMax = max(e.normalForceMax, mag(Fn));
         }
+    }
+
+    if (pairLaw_.valid())
+    {
+        collidePairs();
+    }
+    // drop the springs of the contacts that were not touched (ended)
+    for (parcelType& p : this->owner())
+    {
+        p.collisionRecords().update();
     }
 }
 
