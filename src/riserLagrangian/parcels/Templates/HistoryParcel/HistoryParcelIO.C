@@ -158,7 +158,7 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
         steps[i] = p.history_.steps;
         slip0[i] = p.history_.slip0;
         window[i] = p.windowList();
-        tail[i] = List<vector>(p.history_.tail.begin(), p.history_.tail.end());
+        tail[i] = p.tailList();
         ++i;
     }
 
@@ -204,8 +204,7 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << label(p.history_.steps)
         << token::SPACE << p.history_.slip0
         << token::SPACE << p.windowList()
-        << token::SPACE
-        << List<vector>(p.history_.tail.begin(), p.history_.tail.end())
+        << token::SPACE << p.tailList()
         << token::SPACE << p.UNode_
         << token::SPACE << p.historyKnown_;
 
