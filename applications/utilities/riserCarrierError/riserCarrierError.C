@@ -40,7 +40,7 @@ Usage
 #include "coreVector.H"
 #include "interpolationCellPoint.H"
 #include "Random.H"
-#include "OFstream.H"
+#include "riserFoamVersion.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -177,8 +177,7 @@ int main(int argc, char *argv[])
     const fileName dir = runTime.globalPath()/"postProcessing"/"riserCarrierError";
     mkDir(dir);
     const bool fresh = !isFile(dir/"errors.dat");
-    OFstream os(dir/"errors.dat", IOstream::ASCII, IOstream::currentVersion,
-                IOstream::UNCOMPRESSED, true);
+    appendOFstream os(dir/"errors.dat");
     if (fresh)
     {
         os  << "# cells cellSize rmsVelocity maxVelocity rmsVorticity maxVorticity"

@@ -5,6 +5,8 @@
 
 #include "HistoryParcel.H"
 
+#include <algorithm>
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class ParcelType>
@@ -17,6 +19,16 @@ Foam::HistoryParcel<ParcelType>::windowList() const
         window[j] = history_.at(j);
     }
     return window;
+}
+
+
+template<class ParcelType>
+Foam::List<Foam::vector>
+Foam::HistoryParcel<ParcelType>::tailList() const
+{
+    List<vector> tail(label(history_.tail.size()));
+    std::copy(history_.tail.begin(), history_.tail.end(), tail.begin());
+    return tail;
 }
 
 

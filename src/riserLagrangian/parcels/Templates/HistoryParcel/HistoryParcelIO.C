@@ -231,7 +231,7 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     for (const HistoryParcel<ParcelType>& p : c)
     {
         window[i] = p.windowList();
-        tail[i] = List<vector>(p.history_.tail.begin(), p.history_.tail.end());
+        tail[i] = p.tailList();
         ++i;
     }
 
@@ -316,8 +316,7 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << label(p.history_.steps)
         << token::SPACE << p.history_.slip0
         << token::SPACE << p.windowList()
-        << token::SPACE
-        << List<vector>(p.history_.tail.begin(), p.history_.tail.end())
+        << token::SPACE << p.tailList()
         << token::SPACE << p.UNode_
         << token::SPACE << p.historyKnown_
         << token::SPACE << p.wallContacts_.count

@@ -219,9 +219,12 @@ void Foam::RiserParticleTable<CloudType>::writeObjects
 
 
 template<class CloudType>
-void Foam::RiserParticleTable<CloudType>::preEvolve()
+void Foam::RiserParticleTable<CloudType>::preEvolve
+(
+    RISER_EVOLVE_HOOK_PARAMETER(typename CloudType::parcelType::trackingData)
+)
 {
-    CloudFunctionObject<CloudType>::preEvolve();
+    CloudFunctionObject<CloudType>::preEvolve(RISER_EVOLVE_HOOK_ARGUMENT);
     if (calls_ > 0)
     {
         return;
@@ -259,12 +262,10 @@ void Foam::RiserParticleTable<CloudType>::preEvolve()
 
 
 template<class CloudType>
-void Foam::RiserParticleTable<CloudType>::postMove
+void Foam::RiserParticleTable<CloudType>::noteRelease
 (
-    typename CloudType::parcelType& p,
-    const scalar dt,
-    const point& position0,
-    bool& keepParticle
+    const typename CloudType::parcelType& p,
+    const point& position0
 )
 {
     const labelPair key(p.origProc(), p.origId());
@@ -276,10 +277,13 @@ void Foam::RiserParticleTable<CloudType>::postMove
 
 
 template<class CloudType>
-void Foam::RiserParticleTable<CloudType>::postEvolve()
+void Foam::RiserParticleTable<CloudType>::postEvolve
+(
+    RISER_EVOLVE_HOOK_PARAMETER(typename CloudType::parcelType::trackingData)
+)
 {
     updateLift();
-    CloudFunctionObject<CloudType>::postEvolve();
+    CloudFunctionObject<CloudType>::postEvolve(RISER_EVOLVE_HOOK_ARGUMENT);
     if (calls_++ % interval_ != 0)
     {
         return;
@@ -295,7 +299,7 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
 
     OFstream& os = file();
     cloud.forces().cacheFields(true);
-    typename CloudType::parcelType::trackingData td(cloud);
+    typename CloudType::parcelType::trackingData forceTd(cloud);
     for (auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
@@ -316,7 +320,7 @@ void Foam::RiserParticleTable<CloudType>::postEvolve()
         {
             row.deltaT = max(row.deltaT, mag(record.collisionData()));
         }
-        for (const vector& F : particleForces(cloud, p, td, dt))
+        for (const vector& F : particleForces(cloud, p, forceTd, dt))
         {
             row.forces.push_back(toCore(F));
         }
