@@ -30,6 +30,9 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
             riser::statisticsHeader(title, columns), 0, false
         );
     };
+    std::ostringstream z0, width;
+    z0 << z0_;
+    width << impactSpeedBinWidth_;
     transportFile_ = open
     (
         "transport",
@@ -49,11 +52,9 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
         "axialProfile",
         "riserTransportStatistics: solids volume fraction of "
       + std::to_string(axialBins_) + " slices of equal length, from z = "
-      + std::to_string(z0_) + " m",
+      + z0.str() + " m",
         riser::profileColumns("Cv_z", axialBins_)
     );
-    std::ostringstream width;
-    width << impactSpeedBinWidth_;
     impactFile_ = open
     (
         "impactSpeeds",
@@ -234,41 +235,6 @@ void Foam::RiserTransportStatistics<CloudType>::sample
 }
 
 
-template<class CloudType>
-void Foam::RiserTransportStatistics<CloudType>::storeState()
-{
-    // the processors' counts summed, kept by the master
-    scalar contacts = contacts_, impacts = impacts_;
-    scalar speedSum = impactSpeedSum_, speedMax = impactSpeedMax_;
-    scalarList histogram(impactHistogram_);
-    reduce(contacts, sumOp<scalar>());
-    reduce(impacts, sumOp<scalar>());
-    reduce(speedSum, sumOp<scalar>());
-    reduce(speedMax, maxOp<scalar>());
-    Pstream::listCombineGather(histogram, plusEqOp<scalar>());
-    Pstream::listCombineScatter(histogram);
-
-    this->setModelProperty("lastSample", lastSample_);
-    this->setModelProperty("blockedTime", blockedTime_);
-    this->setModelProperty("contacts", contacts);
-    this->setModelProperty("impacts", impacts);
-    this->setModelProperty("impactSpeedSum", speedSum);
-    this->setModelProperty("impactSpeedMax", speedMax);
-    this->setModelProperty("impactHistogram", histogram);
-
-    if (!Pstream::master())
-    {
-        contacts = impacts = speedSum = speedMax = 0;
-        histogram = Zero;
-    }
-    contacts_ = contacts;
-    impacts_ = impacts;
-    impactSpeedSum_ = speedSum;
-    impactSpeedMax_ = speedMax;
-    impactHistogram_ = histogram;
-}
-
-
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -420,11 +386,42 @@ void Foam::RiserTransportStatistics<CloudType>::postEvolve()
     {
         sample(volume, blockedBins);
     }
-    if (this->owner().time().writeTime())
-    {
-        storeState();
-    }
     CloudFunctionObject<CloudType>::postEvolve();
+}
+
+
+template<class CloudType>
+void Foam::RiserTransportStatistics<CloudType>::write()
+{
+    // the processors' counts summed, kept by the master
+    scalar contacts = contacts_, impacts = impacts_;
+    scalar speedSum = impactSpeedSum_, speedMax = impactSpeedMax_;
+    scalarList histogram(impactHistogram_);
+    reduce(contacts, sumOp<scalar>());
+    reduce(impacts, sumOp<scalar>());
+    reduce(speedSum, sumOp<scalar>());
+    reduce(speedMax, maxOp<scalar>());
+    Pstream::listCombineGather(histogram, plusEqOp<scalar>());
+    Pstream::listCombineScatter(histogram);
+
+    this->setModelProperty("lastSample", lastSample_);
+    this->setModelProperty("blockedTime", blockedTime_);
+    this->setModelProperty("contacts", contacts);
+    this->setModelProperty("impacts", impacts);
+    this->setModelProperty("impactSpeedSum", speedSum);
+    this->setModelProperty("impactSpeedMax", speedMax);
+    this->setModelProperty("impactHistogram", histogram);
+
+    if (!Pstream::master())
+    {
+        contacts = impacts = speedSum = speedMax = 0;
+        histogram = Zero;
+    }
+    contacts_ = contacts;
+    impacts_ = impacts;
+    impactSpeedSum_ = speedSum;
+    impactSpeedMax_ = speedMax;
+    impactHistogram_ = histogram;
 }
 
 
