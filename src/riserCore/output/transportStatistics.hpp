@@ -1,8 +1,8 @@
 // riserCore: the schema of the transport-statistics tables of a cloud of
 // ores in a riser section of diameter D and length L (the cloud function
-// riserTransportStatistics of riserParcelFoam; doc/theory.md section
-// "Transport statistics"). One row per sample, white-space separated, SI
-// units, after comment lines of which the last names the columns.
+// riserTransportStatistics of riserParcelFoam; doc/theory.md section 12).
+// One row per sample, white-space separated, SI units, after comment lines
+// of which the last names the columns.
 //
 // transport.dat, the cloud's state at the sample time and its wall contacts
 // since the previous sample:
