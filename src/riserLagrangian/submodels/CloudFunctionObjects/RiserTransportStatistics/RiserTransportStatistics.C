@@ -301,12 +301,9 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
         {
             impactHistogram_ = histogram;
         }
-    }
 
-    // opened now: a restart after which no sample is taken must not keep
-    // the rows after its start
-    if (Pstream::master())
-    {
+        // opened now: a restart after which no sample is taken must not
+        // keep the rows after its start
         openFiles();
     }
 }
