@@ -94,10 +94,13 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
             impactSpeedSum_ += trace.impactSpeed;
             impactSpeedMax_ = max(impactSpeedMax_, trace.impactSpeed);
             const label bin =
-                min
+                label
                 (
-                    impactSpeedBins_ - 1,
-                    label(max(0, trace.impactSpeed)/impactSpeedBinWidth_)
+                    min
+                    (
+                        scalar(impactSpeedBins_ - 1),
+                        max(0, trace.impactSpeed)/impactSpeedBinWidth_
+                    )
                 );
             impactHistogram_[bin] += 1;
         }
@@ -109,11 +112,12 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
 
 template<class CloudType>
 Foam::scalarList
-Foam::RiserTransportStatistics<CloudType>::axialVolumes() const
+Foam::RiserTransportStatistics<CloudType>::axialVolumes()
 {
     scalarList volume(axialBins_, Zero);
-    for (const auto& p : this->owner())
+    for (auto& p : this->owner())
     {
+        const endOfStep<typename CloudType::parcelType> done(p);
         const label bin =
             riser::axialBin(p.position().z(), z0_, length_, axialBins_);
         volume[bin] += p.nParticle()*p.volume();
