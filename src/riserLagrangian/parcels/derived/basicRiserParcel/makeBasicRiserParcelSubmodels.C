@@ -5,7 +5,8 @@
 Description
     Registers, for the riser cloud basicRiserCloud, the stock kinematic
     submodels (so that a riser case can use any of them), the riser
-    submodels, and the Basset force, which needs the history parcels.
+    submodels, and the Basset force and the cloud function
+    riserTransportStatistics, which need the history parcels.
 
 \*---------------------------------------------------------------------------*/
 
@@ -22,6 +23,7 @@ Description
 
 #include "makeRiserSubmodels.H"
 #include "RiserBassetForce.H"
+#include "RiserTransportStatistics.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -43,5 +45,6 @@ makeParcelSurfaceFilmModels(basicRiserCloud);
 makeRiserForces(basicRiserCloud);
 makeRiserCollisionSubmodels(basicRiserCloud);
 makeParticleForceModelType(RiserBassetForce, basicRiserCloud);
+makeCloudFunctionObjectType(RiserTransportStatistics, basicRiserCloud);
 
 // ************************************************************************* //

@@ -7,6 +7,7 @@
 #include "particleForceEvaluation.H"
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
+#include "particleStateExchange.H"
 #include "boundBox.H"
 #include "coreVector.H"
 #include "output/particleTable.hpp"
@@ -69,40 +70,7 @@ void Foam::RiserParticleTable<CloudType>::updateLift()
             missing.append(key);
         }
     }
-    if (Pstream::parRun() && returnReduce(missing.size(), sumOp<label>()))
-    {
-        List<labelPairList> allMissing(Pstream::nProcs());
-        allMissing[Pstream::myProcNo()] = missing;
-        Pstream::gatherList(allMissing);
-        Pstream::scatterList(allMissing);
-
-        List<labelPairList> sentKeys(Pstream::nProcs());
-        List<List<vector2D>> sentStates(Pstream::nProcs());
-        forAll(allMissing, proci)
-        {
-            for (const labelPair& key : allMissing[proci])
-            {
-                auto iter = lift_.find(key);
-                if (proci != Pstream::myProcNo() && iter.found())
-                {
-                    sentKeys[Pstream::myProcNo()].append(key);
-                    sentStates[Pstream::myProcNo()].append(*iter);
-                    lift_.erase(iter);
-                }
-            }
-        }
-        Pstream::gatherList(sentKeys);
-        Pstream::scatterList(sentKeys);
-        Pstream::gatherList(sentStates);
-        Pstream::scatterList(sentStates);
-        forAll(sentKeys, proci)
-        {
-            forAll(sentKeys[proci], i)
-            {
-                lift_.insert(sentKeys[proci][i], sentStates[proci][i]);
-            }
-        }
-    }
+    claimParticleStates(lift_, missing);
 
     for (auto& p : cloud)
     {
