@@ -344,9 +344,12 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
-void Foam::RiserTransportStatistics<CloudType>::preEvolve()
+void Foam::RiserTransportStatistics<CloudType>::preEvolve
+(
+    RISER_EVOLVE_HOOK_PARAMETER(typename CloudType::parcelType::trackingData)
+)
 {
-    CloudFunctionObject<CloudType>::preEvolve();
+    CloudFunctionObject<CloudType>::preEvolve(RISER_EVOLVE_HOOK_ARGUMENT);
     if (started_)
     {
         return;
@@ -365,7 +368,10 @@ void Foam::RiserTransportStatistics<CloudType>::preEvolve()
 
 
 template<class CloudType>
-void Foam::RiserTransportStatistics<CloudType>::postEvolve()
+void Foam::RiserTransportStatistics<CloudType>::postEvolve
+(
+    RISER_EVOLVE_HOOK_PARAMETER(typename CloudType::parcelType::trackingData)
+)
 {
     countContacts();
 
@@ -387,7 +393,7 @@ void Foam::RiserTransportStatistics<CloudType>::postEvolve()
     {
         sample(volume, blockedBins);
     }
-    CloudFunctionObject<CloudType>::postEvolve();
+    CloudFunctionObject<CloudType>::postEvolve(RISER_EVOLVE_HOOK_ARGUMENT);
 }
 
 
