@@ -17,6 +17,7 @@ Description
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeRiserForces(basicKinematicCollidingCloud);
+makeRiserInjectionModels(basicKinematicCollidingCloud);
 makeRiserCollisionSubmodels(basicKinematicCollidingCloud);
 
 // ************************************************************************* //

@@ -17,5 +17,6 @@ Description
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeRiserForces(basicKinematicMPPICCloud);
+makeRiserInjectionModels(basicKinematicMPPICCloud);
 
 // ************************************************************************* //

@@ -18,5 +18,6 @@ Description
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeRiserForces(basicKinematicCloud);
+makeRiserInjectionModels(basicKinematicCloud);
 
 // ************************************************************************* //

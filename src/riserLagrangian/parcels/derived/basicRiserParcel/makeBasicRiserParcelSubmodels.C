@@ -41,6 +41,7 @@ makeParcelStochasticCollisionModels(basicRiserCloud);
 makeParcelSurfaceFilmModels(basicRiserCloud);
 
 makeRiserForces(basicRiserCloud);
+makeRiserInjectionModels(basicRiserCloud);
 makeRiserCollisionSubmodels(basicRiserCloud);
 makeParticleForceModelType(RiserBassetForce, basicRiserCloud);
 
