@@ -4,31 +4,23 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserFillInjection.H"
-#include "checkedEntry.H"
-#include "modelEntries.H"
-#include "coreVector.H"
-#include "distributionModel.H"
 #include "cyclicPolyPatch.H"
-#include "Random.H"
 #include "boundBox.H"
-#include "mathematicalConstants.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
 void Foam::RiserFillInjection<CloudType>::fill()
 {
-    using namespace checkedEntry;
+    oreSource& source = *source_;
     using constant::mathematical::pi;
 
     const dictionary& dict = this->coeffDict();
     const polyMesh& mesh = this->owner().mesh();
     const scalar D = carrier_.riser().diameter();
     const scalar R = 0.5*D;
-
-    const scalar Cv = inRange(dict, "solidsFraction", 0, false, 0.5, true);
-    const label seed = count(dict, "seed", 0, labelMax);
-    const label maxAttempts = count(dict, "maxAttempts", 1, 10000000, 10000);
+    const scalar Cv =
+        checkedEntry::inRange(dict, "solidsFraction", 0, false, 0.5, true);
 
     // the section: the mesh's extent along the axis; periodic with cyclics
     const boundBox bb(mesh.points(), true);
@@ -41,57 +33,31 @@ void Foam::RiserFillInjection<CloudType>::fill()
     }
     const scalar V = 0.25*pi*D*D*L;
 
-    Random rnd(seed);
-    const autoPtr<distributionModel> size
-    (
-        distributionModel::New(dict.subDict("sizeDistribution"), rnd)
-    );
-    autoPtr<distributionModel> density;
-    if (dict.found("densityDistribution"))
-    {
-        density = distributionModel::New(dict.subDict("densityDistribution"), rnd);
-        if (!(density->minValue() > 0 && density->maxValue() <= 1e5))
-        {
-            FatalIOErrorInFunction(dict)
-                << "entry 'densityDistribution' spans ["
-                << density->minValue() << ", " << density->maxValue()
-                << "] kg/m^3; ore densities lie in (0, 1e5]"
-                << nl << exit(FatalIOError);
-        }
-    }
-    const scalar rho0 =
-        density ? 0 : modelEntries::particleDensity(this->owner().constProps().dict());
-
-    const scalar dMax = size->maxValue();
-    const scalar gap =
-        inRange(dict, "gap", 0, false, 0.1*D, true, 0.01*dMax);
     // the ends of a closed section are walls; a periodic one must not let
     // an ore reach two images of another
-    const scalar span = periodic ? 0.5*L : L;
-    if (!(size->minValue() > 0 && dMax + 2*gap < min(D, span)))
-    {
-        FatalIOErrorInFunction(dict)
-            << "entry 'sizeDistribution' spans [" << size->minValue()
-            << ", " << dMax << "] m; with gap " << gap << " m the ores must"
-            << " lie in (0, " << min(D, span) - 2*gap << ") (riser D = " << D
-            << " m, section length L = " << L << " m"
-            << (periodic ? ", periodic: at most L/2" : "") << ")"
-            << nl << exit(FatalIOError);
-    }
+    const scalar gap = source.gap();
+    source.checkDiameters
+    (
+        dict, min(D, periodic ? 0.5*L : L) - 2*gap,
+        "riser D = " + Foam::name(D) + " m, section length L = "
+      + Foam::name(L) + " m" + (periodic ? ", periodic: at most L/2" : "")
+    );
 
     // bins at least dMax + gap wide: an ore's neighbours are in the 27 bins
     // about its own
-    const scalar h = dMax + gap;
+    const scalar h = source.maxDiameter() + gap;
     const label nXY = max(label(1), label(2*R/h));
     const label nZ = max(label(1), label(L/h));
     List<DynamicList<label>> bins(nXY*nXY*nZ);
-    auto binIndex = [&](const scalar c, const scalar lo, const scalar width, const label n)
+    auto binIndex = [](const scalar c, const scalar lo, const scalar width, const label n)
     {
         return min(n - 1, max(label(0), label((c - lo)/width*n)));
     };
-    auto binOf = [&](const label ix, const label iy, const label iz)
+    auto binOf = [&](const vector& x)
     {
-        return (iz*nXY + iy)*nXY + ix;
+        return
+            (binIndex(x.z(), 0, L, nZ)*nXY + binIndex(x.y(), -R, 2*R, nXY))*nXY
+          + binIndex(x.x(), -R, 2*R, nXY);
     };
 
     DynamicList<vector> places;
@@ -123,7 +89,7 @@ void Foam::RiserFillInjection<CloudType>::fill()
             {
                 for (label jx = max(ix - 1, 0); jx <= min(ix + 1, nXY - 1); ++jx)
                 {
-                    for (const label j : bins[binOf(jx, jy, jz)])
+                    for (const label j : bins[(jz*nXY + jy)*nXY + jx])
                     {
                         vector s = x - places[j];
                         if (periodic)
@@ -144,42 +110,27 @@ void Foam::RiserFillInjection<CloudType>::fill()
 
     while (true)
     {
-        const scalar d = size->sample();
-        const scalar rho = density ? density->sample() : rho0;
-        const scalar v = pi/6*pow3(d);
-        if (target - placed < 0.5*v)
+        const oreSource::ore o = source.draw();
+        if (target - placed < 0.5*o.volume())
         {
             break;
         }
-        const scalar r = 0.5*d;
-        const scalar reachWall = R - r - gap;
+        const scalar r = 0.5*o.d;
         const scalar zLo = periodic ? 0 : r + gap;
         const scalar zSpan = periodic ? L : L - 2*(r + gap);
 
         bool done = false;
-        for (label attempt = 0; attempt < maxAttempts && !done; ++attempt)
+        for (label attempt = 0; attempt < source.maxAttempts() && !done; ++attempt)
         {
-            const scalar s = reachWall*std::sqrt(rnd.sample01<scalar>());
-            const scalar phi = 2*pi*rnd.sample01<scalar>();
-            const vector x
-            (
-                s*std::cos(phi), s*std::sin(phi), zLo + zSpan*rnd.sample01<scalar>()
-            );
+            vector x = source.discPoint(o.d);
+            x.z() = zLo + zSpan*source.uniform01();
             if (isFree(x, r))
             {
-                bins
-                [
-                    binOf
-                    (
-                        binIndex(x.x(), -R, 2*R, nXY),
-                        binIndex(x.y(), -R, 2*R, nXY),
-                        binIndex(x.z(), 0, L, nZ)
-                    )
-                ].append(places.size());
+                bins[binOf(x)].append(places.size());
                 places.append(x);
-                diameters.append(d);
-                densities.append(rho);
-                placed += v;
+                diameters.append(o.d);
+                densities.append(o.rho);
+                placed += o.volume();
                 done = true;
             }
         }
@@ -188,19 +139,20 @@ void Foam::RiserFillInjection<CloudType>::fill()
             FatalIOErrorInFunction(dict)
                 << "entry 'solidsFraction' = " << Cv << " is beyond what"
                 << " random sequential placement reaches here: ore "
-                << places.size() + 1 << " (d = " << d << " m) found no place"
-                << " in " << maxAttempts << " attempts at C_v = " << placed/V
-                << " (equal spheres jam near 0.38); lower solidsFraction"
-                << " into (0, " << placed/V << "]" << nl << exit(FatalIOError);
+                << places.size() + 1 << " (d = " << o.d << " m) found no place"
+                << " in " << source.maxAttempts() << " attempts at C_v = "
+                << placed/V << " (equal spheres jam near 0.38); lower"
+                << " solidsFraction into (0, " << placed/V << "]" << nl
+                << exit(FatalIOError);
         }
     }
     if (places.empty())
     {
+        const scalar d = source.meanDiameter();
         FatalIOErrorInFunction(dict)
             << "entry 'solidsFraction' = " << Cv << " places no ore: the"
             << " section holds " << V << " m^3 and one ore of diameter "
-            << size->meanValue() << " m is "
-            << pi/6*pow3(size->meanValue())/V << " of it" << nl
+            << d << " m is " << pi/6*pow3(d)/V << " of it" << nl
             << exit(FatalIOError);
     }
 
@@ -229,56 +181,18 @@ Foam::RiserFillInjection<CloudType>::RiserFillInjection
 :
     InjectionModel<CloudType>(dict, owner, modelName, typeName),
     carrier_(carrierFlow::New(owner.U())),
-    z0_(0),
-    carrierVelocity_
+    source_
     (
-        checkedEntry::choice<bool>
+        std::make_shared<oreSource>
         (
-            this->coeffDict(), "velocity", {{"carrier", true}, {"fixed", false}}
+            this->coeffDict(), carrier_, owner.constProps().dict(),
+            std::initializer_list<const char*>{"solidsFraction"},
+            this->parcelBasis_ == InjectionModel<CloudType>::pbFixed,
+            this->nParticleFixed_
         )
     ),
-    U0_(Zero)
+    z0_(0)
 {
-    const dictionary& coeffs = this->coeffDict();
-    if (carrierVelocity_)
-    {
-        checkedEntry::allowedKeys
-        (
-            coeffs,
-            {"type", "SOI", "massTotal", "parcelBasisType", "nParticle",
-             "solidsFraction", "seed", "velocity", "gap", "maxAttempts",
-             "sizeDistribution", "densityDistribution"}
-        );
-    }
-    else
-    {
-        checkedEntry::allowedKeys
-        (
-            coeffs,
-            {"type", "SOI", "massTotal", "parcelBasisType", "nParticle",
-             "solidsFraction", "seed", "velocity", "U0", "gap", "maxAttempts",
-             "sizeDistribution", "densityDistribution"}
-        );
-        U0_ = coeffs.get<vector>("U0");
-        if (!modelEntries::withinMagnitude(U0_, 100))
-        {
-            FatalIOErrorInFunction(coeffs)
-                << "entry 'U0' = " << U0_ << " is not a release velocity: its"
-                << " magnitude must be finite and at most 100 m/s" << nl
-                << exit(FatalIOError);
-        }
-    }
-    if
-    (
-        this->parcelBasis_ != InjectionModel<CloudType>::pbFixed
-     || this->nParticleFixed_ != 1
-    )
-    {
-        FatalIOErrorInFunction(coeffs)
-            << "entries 'parcelBasisType' and 'nParticle': riserFill places"
-            << " single ores; set parcelBasisType fixed; nParticle 1;"
-            << nl << exit(FatalIOError);
-    }
     fill();
 }
 
@@ -291,12 +205,11 @@ Foam::RiserFillInjection<CloudType>::RiserFillInjection
 :
     InjectionModel<CloudType>(im),
     carrier_(im.carrier_),
+    source_(im.source_),
     places_(im.places_),
     z0_(im.z0_),
     diameters_(im.diameters_),
-    densities_(im.densities_),
-    carrierVelocity_(im.carrierVelocity_),
-    U0_(im.U0_)
+    densities_(im.densities_)
 {}
 
 
@@ -338,10 +251,9 @@ void Foam::RiserFillInjection<CloudType>::setPositionAndCell
 )
 {
     // the section about the riser's axis where the mesh is now
-    const scalar t = this->owner().mesh().time().value();
     const vector& place = places_[parcelI];
     position =
-        fromCore(carrier_.riser().motion().axis(t))
+        fromCore(carrier_.riser().motion().axis(this->owner().mesh().time().value()))
       + vector(place.x(), place.y(), z0_ + place.z());
     this->findCellAtPosition(cellOwner, tetFacei, tetPti, position, true);
 }
@@ -359,15 +271,7 @@ void Foam::RiserFillInjection<CloudType>::setProperties
     parcel.d() = diameters_[parcelI];
     parcel.rho() = densities_[parcelI];
     parcel.U() =
-        carrierVelocity_
-      ? fromCore
-        (
-            carrier_.riser().velocity
-            (
-                toCore(parcel.position()), this->owner().mesh().time().value()
-            )
-        )
-      : U0_;
+        source_->velocity(parcel.position(), this->owner().mesh().time().value());
 }
 
 
