@@ -3,7 +3,8 @@
   License: GPL-3.0-or-later
 
 Description
-    Registers the riser forces and the riser collision submodels for the
+    Registers the riser forces, the riser injection models and the riser
+    collision submodels for the
     stock colliding cloud basicKinematicCollidingCloud, so that
     icoUncoupledKinematicParcelFoam, icoUncoupledKinematicParcelDyMFoam,
     DPMFoam and DPMDyMFoam find them after
@@ -17,6 +18,7 @@ Description
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeRiserForces(basicKinematicCollidingCloud);
+makeRiserInjectionModels(basicKinematicCollidingCloud);
 makeRiserCollisionSubmodels(basicKinematicCollidingCloud);
 
 // ************************************************************************* //

@@ -3,7 +3,7 @@
   License: GPL-3.0-or-later
 
 Description
-    Registers the riser forces for the stock MPPIC cloud
+    Registers the riser forces and the riser injection models for the stock MPPIC cloud
     basicKinematicMPPICCloud, so that MPPICFoam and MPPICDyMFoam find them
     after libs ("libriserLagrangian.so"); in system/controlDict. The cloud
     does not collide: riserWallContact and riserParticleTable are not
@@ -17,5 +17,6 @@ Description
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeRiserForces(basicKinematicMPPICCloud);
+makeRiserInjectionModels(basicKinematicMPPICCloud);
 
 // ************************************************************************* //

@@ -3,7 +3,7 @@
   License: GPL-3.0-or-later
 
 Description
-    Registers the riser forces for the stock kinematic cloud
+    Registers the riser forces and the riser injection models for the stock kinematic cloud
     basicKinematicCloud, so that uncoupledKinematicParcelFoam and
     uncoupledKinematicParcelDyMFoam find them after
     libs ("libriserLagrangian.so"); in system/controlDict. The cloud does
@@ -18,5 +18,6 @@ Description
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
 makeRiserForces(basicKinematicCloud);
+makeRiserInjectionModels(basicKinematicCloud);
 
 // ************************************************************************* //

@@ -43,6 +43,7 @@ makeParcelStochasticCollisionModels(basicRiserCloud);
 makeParcelSurfaceFilmModels(basicRiserCloud);
 
 makeRiserForces(basicRiserCloud);
+makeRiserInjectionModels(basicRiserCloud);
 makeRiserCollisionSubmodels(basicRiserCloud);
 makeParticleForceModelType(RiserBassetForce, basicRiserCloud);
 makeCloudFunctionObjectType(RiserTransportStatistics, basicRiserCloud);

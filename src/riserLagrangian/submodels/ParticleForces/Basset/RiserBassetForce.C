@@ -130,14 +130,15 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
 {
     coefficientCache& c = lastCoefficient_;
     const bool sameState = c.key.matchOrTake(p, this->mesh().time().timeIndex());
-    if (sameState && c.U == p.U() && c.muc == muc)
+    const scalar d = p.d();
+    if (sameState && c.U == p.U() && c.muc == muc && c.d == d)
     {
         return c.KH;
     }
     c.U = p.U();
     c.muc = muc;
+    c.d = d;
 
-    const scalar d = p.d();
     const scalar rhoc = td.rhoc();
     scalar CH = riser::classicalBassetCoefficient;
     if (coefficient_ == riser::BassetModel::michaelidesRoig)

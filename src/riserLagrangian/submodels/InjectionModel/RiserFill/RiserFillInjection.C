@@ -1,0 +1,278 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "RiserFillInjection.H"
+#include "cyclicPolyPatch.H"
+#include "boundBox.H"
+
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RiserFillInjection<CloudType>::fill()
+{
+    oreSource& source = *source_;
+    using constant::mathematical::pi;
+
+    const dictionary& dict = this->coeffDict();
+    const polyMesh& mesh = this->owner().mesh();
+    const scalar D = carrier_.riser().diameter();
+    const scalar R = 0.5*D;
+    const scalar Cv =
+        checkedEntry::inRange(dict, "solidsFraction", 0, false, 0.5, true);
+
+    // the section: the mesh's extent along the axis; periodic with cyclics
+    const boundBox bb(mesh.points(), true);
+    const scalar z0 = bb.min().z();
+    const scalar L = bb.max().z() - z0;
+    bool periodic = false;
+    for (const polyPatch& patch : mesh.boundaryMesh())
+    {
+        periodic = periodic || isA<cyclicPolyPatch>(patch);
+    }
+    const scalar V = 0.25*pi*D*D*L;
+
+    // the ends of a closed section are walls; a periodic one must not let
+    // an ore reach two images of another
+    const scalar gap = source.gap();
+    source.checkDiameters
+    (
+        dict, min(D, periodic ? 0.5*L : L) - 2*gap,
+        "riser D = " + Foam::name(D) + " m, section length L = "
+      + Foam::name(L) + " m" + (periodic ? ", periodic: at most L/2" : "")
+    );
+
+    // bins at least dMax + gap wide: an ore's neighbours are in the 27 bins
+    // about its own
+    const scalar h = source.maxDiameter() + gap;
+    const label nXY = max(label(1), label(2*R/h));
+    const label nZ = max(label(1), label(L/h));
+    List<DynamicList<label>> bins(nXY*nXY*nZ);
+    auto binIndex = [](const scalar c, const scalar lo, const scalar width, const label n)
+    {
+        return min(n - 1, max(label(0), label((c - lo)/width*n)));
+    };
+    auto binOf = [&](const vector& x)
+    {
+        return
+            (binIndex(x.z(), 0, L, nZ)*nXY + binIndex(x.y(), -R, 2*R, nXY))*nXY
+          + binIndex(x.x(), -R, 2*R, nXY);
+    };
+
+    DynamicList<vector> places;
+    DynamicList<scalar> diameters, densities;
+    const scalar target = Cv*V;
+    scalar placed = 0;
+
+    auto isFree = [&](const vector& x, const scalar r)
+    {
+        const label ix = binIndex(x.x(), -R, 2*R, nXY);
+        const label iy = binIndex(x.y(), -R, 2*R, nXY);
+        const label iz = binIndex(x.z(), 0, L, nZ);
+        labelHashSet zBins;
+        for (label dz = -1; dz <= 1; ++dz)
+        {
+            const label jz = iz + dz;
+            if (periodic)
+            {
+                zBins.insert((jz + nZ) % nZ);
+            }
+            else if (jz >= 0 && jz < nZ)
+            {
+                zBins.insert(jz);
+            }
+        }
+        for (const label jz : zBins)
+        {
+            for (label jy = max(iy - 1, 0); jy <= min(iy + 1, nXY - 1); ++jy)
+            {
+                for (label jx = max(ix - 1, 0); jx <= min(ix + 1, nXY - 1); ++jx)
+                {
+                    for (const label j : bins[(jz*nXY + jy)*nXY + jx])
+                    {
+                        vector s = x - places[j];
+                        if (periodic)
+                        {
+                            s.z() -= L*std::round(s.z()/L);
+                        }
+                        const scalar reach = r + 0.5*diameters[j] + gap;
+                        if (magSqr(s) < reach*reach)
+                        {
+                            return false;
+                        }
+                    }
+                }
+            }
+        }
+        return true;
+    };
+
+    while (true)
+    {
+        const oreSource::ore o = source.draw();
+        if (target - placed < 0.5*o.volume())
+        {
+            break;
+        }
+        const scalar r = 0.5*o.d;
+        const scalar zLo = periodic ? 0 : r + gap;
+        const scalar zSpan = periodic ? L : L - 2*(r + gap);
+
+        bool done = false;
+        for (label attempt = 0; attempt < source.maxAttempts() && !done; ++attempt)
+        {
+            vector x = source.discPoint(o.d);
+            x.z() = zLo + zSpan*source.uniform01();
+            if (isFree(x, r))
+            {
+                bins[binOf(x)].append(places.size());
+                places.append(x);
+                diameters.append(o.d);
+                densities.append(o.rho);
+                placed += o.volume();
+                done = true;
+            }
+        }
+        if (!done)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'solidsFraction' = " << Cv << " is beyond what"
+                << " random sequential placement reaches here: ore "
+                << places.size() + 1 << " (d = " << o.d << " m) found no place"
+                << " in " << source.maxAttempts() << " attempts at C_v = "
+                << placed/V << " (equal spheres jam near 0.38); lower"
+                << " solidsFraction into (0, " << placed/V << "]" << nl
+                << exit(FatalIOError);
+        }
+    }
+    if (places.empty())
+    {
+        const scalar d = source.meanDiameter();
+        FatalIOErrorInFunction(dict)
+            << "entry 'solidsFraction' = " << Cv << " places no ore: the"
+            << " section holds " << V << " m^3 and one ore of diameter "
+            << d << " m is " << pi/6*pow3(d)/V << " of it" << nl
+            << exit(FatalIOError);
+    }
+
+    places_.transfer(places);
+    diameters_.transfer(diameters);
+    densities_.transfer(densities);
+    z0_ = z0;
+    this->volumeTotal_ = placed;
+
+    Info<< "    riserFill: placed " << places_.size() << " ores, solids"
+        << " fraction C_v = " << placed/V << " (requested " << Cv
+        << ") in the " << (periodic ? "periodic " : "") << "riser section of"
+        << " length " << L << " m and volume " << V << " m^3" << endl;
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RiserFillInjection<CloudType>::RiserFillInjection
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& modelName
+)
+:
+    InjectionModel<CloudType>(dict, owner, modelName, typeName),
+    carrier_(carrierFlow::New(owner.U())),
+    source_
+    (
+        std::make_shared<oreSource>
+        (
+            this->coeffDict(), carrier_, owner.constProps().dict(),
+            std::initializer_list<const char*>{"solidsFraction"},
+            this->parcelBasis_ == InjectionModel<CloudType>::pbFixed,
+            this->nParticleFixed_
+        )
+    ),
+    z0_(0)
+{
+    fill();
+}
+
+
+template<class CloudType>
+Foam::RiserFillInjection<CloudType>::RiserFillInjection
+(
+    const RiserFillInjection<CloudType>& im
+)
+:
+    InjectionModel<CloudType>(im),
+    carrier_(im.carrier_),
+    source_(im.source_),
+    places_(im.places_),
+    z0_(im.z0_),
+    diameters_(im.diameters_),
+    densities_(im.densities_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::RiserFillInjection<CloudType>::parcelsToInject
+(
+    const scalar time0,
+    const scalar time1
+)
+{
+    // times relative to SOI: all ores in the step that holds SOI
+    return (0 >= time0 && 0 < time1) ? places_.size() : 0;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserFillInjection<CloudType>::volumeToInject
+(
+    const scalar time0,
+    const scalar time1
+)
+{
+    return (0 >= time0 && 0 < time1) ? this->volumeTotal_ : 0;
+}
+
+
+template<class CloudType>
+void Foam::RiserFillInjection<CloudType>::setPositionAndCell
+(
+    const label parcelI,
+    const label,
+    const scalar,
+    vector& position,
+    label& cellOwner,
+    label& tetFacei,
+    label& tetPti
+)
+{
+    // the section about the riser's axis where the mesh is now
+    const vector& place = places_[parcelI];
+    position =
+        fromCore(carrier_.riser().motion().axis(this->owner().mesh().time().value()))
+      + vector(place.x(), place.y(), z0_ + place.z());
+    this->findCellAtPosition(cellOwner, tetFacei, tetPti, position, true);
+}
+
+
+template<class CloudType>
+void Foam::RiserFillInjection<CloudType>::setProperties
+(
+    const label parcelI,
+    const label,
+    const scalar,
+    typename CloudType::parcelType& parcel
+)
+{
+    parcel.d() = diameters_[parcelI];
+    parcel.rho() = densities_[parcelI];
+    parcel.U() =
+        source_->velocity(parcel.position(), this->owner().mesh().time().value());
+}
+
+
+// ************************************************************************* //

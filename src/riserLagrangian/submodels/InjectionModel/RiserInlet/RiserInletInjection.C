@@ -1,0 +1,262 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "RiserInletInjection.H"
+#include "cyclicPolyPatch.H"
+#include "boundBox.H"
+
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt)
+{
+    oreSource& source = *source_;
+    const scalar gap = source.gap();
+    const vector axis = fromCore(carrier_.riser().motion().axis(t));
+    // every ore within reach of a new one: below the slab of the step
+    // (release speeds are at most 100 m/s) and an ore's reach above it
+    const scalar zReach = z0_ + 2*(source.maxDiameter() + gap) + 100*dt;
+
+    List<List<vector>> nearAll(Pstream::nProcs());
+    List<scalarList> nearAllD(Pstream::nProcs());
+    {
+        DynamicList<vector> x;
+        DynamicList<scalar> d;
+        for (const auto& p : this->owner())
+        {
+            const vector offset = p.position() - axis;
+            if (offset.z() < zReach)
+            {
+                x.append(offset);
+                d.append(p.d());
+            }
+        }
+        nearAll[Pstream::myProcNo()].transfer(x);
+        nearAllD[Pstream::myProcNo()].transfer(d);
+    }
+    Pstream::gatherList(nearAll);
+    Pstream::scatterList(nearAll);
+    Pstream::gatherList(nearAllD);
+    Pstream::scatterList(nearAllD);
+    DynamicList<vector> nearX;
+    DynamicList<scalar> nearD;
+    for (label proci = 0; proci < Pstream::nProcs(); ++proci)
+    {
+        nearX.append(nearAll[proci]);
+        nearD.append(nearAllD[proci]);
+    }
+    // whether an ore of radius r at x keeps the gap from the ores at xs of
+    // diameters ds
+    auto keepsGap = [gap]
+    (
+        const vector& x, const scalar r, const UList<vector>& xs,
+        const UList<scalar>& ds
+    )
+    {
+        forAll(xs, j)
+        {
+            const scalar reach = r + 0.5*ds[j] + gap;
+            if (magSqr(x - xs[j]) < reach*reach)
+            {
+                return false;
+            }
+        }
+        return true;
+    };
+
+    const scalar t1 = t - this->SOI_;
+    scalar due =
+        massFlowRate_*min(t1, duration_) - this->massInjected_;
+    while (due >= 0.5*next_.rho*next_.volume())
+    {
+        const scalar r = 0.5*next_.d;
+        bool done = false;
+        for (label attempt = 0; attempt < source.maxAttempts() && !done; ++attempt)
+        {
+            vector x = source.discPoint(next_.d);
+            const scalar rise = max(scalar(0), source.velocity(axis + x, t).z()*dt);
+            x.z() = z0_ + r + gap + rise*source.uniform01();
+            done =
+                keepsGap(x, r, nearX, nearD)
+             && keepsGap(x, r, places_, diameters_);
+            if (done)
+            {
+                places_.append(x);
+                diameters_.append(next_.d);
+                densities_.append(next_.rho);
+            }
+        }
+        if (!done)
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "entry 'massFlowRate' = " << massFlowRate_ << " kg/s: at t = "
+                << t << " an ore (d = " << next_.d << " m) found no place at the"
+                << " inlet in " << source.maxAttempts() << " attempts, with "
+                << places_.size() << " ores released in this step and "
+                << nearX.size() << " near the inlet: the stream is too dense for the"
+                << " inlet, or its release velocity does not carry it into the"
+                << " riser; lower massFlowRate or release the ores faster"
+                << nl << exit(FatalIOError);
+        }
+        due -= next_.rho*next_.volume();
+        next_ = source.draw();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RiserInletInjection<CloudType>::RiserInletInjection
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& modelName
+)
+:
+    InjectionModel<CloudType>(dict, owner, modelName, typeName),
+    carrier_(carrierFlow::New(owner.U())),
+    source_
+    (
+        std::make_shared<oreSource>
+        (
+            this->coeffDict(), carrier_, owner.constProps().dict(),
+            std::initializer_list<const char*>{"duration", "massFlowRate"},
+            this->parcelBasis_ == InjectionModel<CloudType>::pbFixed,
+            this->nParticleFixed_
+        )
+    ),
+    duration_
+    (
+        checkedEntry::inRange(this->coeffDict(), "duration", 0, false, VGREAT, true)
+    ),
+    massFlowRate_
+    (
+        checkedEntry::inRange
+        (
+            this->coeffDict(), "massFlowRate", 0, false, VGREAT, true
+        )
+    ),
+    z0_(0),
+    next_(source_->draw())
+{
+    const polyMesh& mesh = owner.mesh();
+    for (const polyPatch& patch : mesh.boundaryMesh())
+    {
+        if (isA<cyclicPolyPatch>(patch))
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "riserInlet needs an open riser; the mesh has the cyclic"
+                << " patch " << patch.name() << " (a periodic riser has no"
+                << " inlet: fill it with riserFill)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    z0_ = boundBox(mesh.points(), true).min().z();
+    source_->checkDiameters
+    (
+        this->coeffDict(),
+        carrier_.riser().diameter() - 2*source_->gap(),
+        "riser D = " + Foam::name(carrier_.riser().diameter()) + " m"
+    );
+    this->volumeTotal_ = massFlowRate_*duration_;
+    Info<< "    riserInlet: " << massFlowRate_ << " kg/s of ores through the"
+        << " inlet disc at z = " << z0_ << " m from t = " << this->SOI_
+        << " s for " << duration_ << " s" << endl;
+}
+
+
+template<class CloudType>
+Foam::RiserInletInjection<CloudType>::RiserInletInjection
+(
+    const RiserInletInjection<CloudType>& im
+)
+:
+    InjectionModel<CloudType>(im),
+    carrier_(im.carrier_),
+    source_(im.source_),
+    duration_(im.duration_),
+    massFlowRate_(im.massFlowRate_),
+    z0_(im.z0_),
+    next_(im.next_),
+    places_(im.places_),
+    diameters_(im.diameters_),
+    densities_(im.densities_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::label Foam::RiserInletInjection<CloudType>::parcelsToInject
+(
+    const scalar time0,
+    const scalar time1
+)
+{
+    places_.clear();
+    diameters_.clear();
+    densities_.clear();
+    if (time0 < duration_ && time1 > time0)
+    {
+        place(this->SOI_ + time1, time1 - time0);
+    }
+    return places_.size();
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserInletInjection<CloudType>::volumeToInject
+(
+    const scalar,
+    const scalar
+)
+{
+    // the ores parcelsToInject placed for this step
+    scalar V = 0;
+    forAll(diameters_, i)
+    {
+        V += constant::mathematical::pi/6*pow3(diameters_[i]);
+    }
+    return V;
+}
+
+
+template<class CloudType>
+void Foam::RiserInletInjection<CloudType>::setPositionAndCell
+(
+    const label parcelI,
+    const label,
+    const scalar,
+    vector& position,
+    label& cellOwner,
+    label& tetFacei,
+    label& tetPti
+)
+{
+    position =
+        fromCore(carrier_.riser().motion().axis(this->owner().mesh().time().value()))
+      + places_[parcelI];
+    this->findCellAtPosition(cellOwner, tetFacei, tetPti, position, true);
+}
+
+
+template<class CloudType>
+void Foam::RiserInletInjection<CloudType>::setProperties
+(
+    const label parcelI,
+    const label,
+    const scalar,
+    typename CloudType::parcelType& parcel
+)
+{
+    parcel.d() = diameters_[parcelI];
+    parcel.rho() = densities_[parcelI];
+    parcel.U() =
+        source_->velocity(parcel.position(), this->owner().mesh().time().value());
+}
+
+
+// ************************************************************************* //
