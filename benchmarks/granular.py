@@ -3,8 +3,9 @@ pure-DEM scene: ores of 9-11 mm poured into a closed vertical riser section
 (D = 0.1 m, floor at z = 0, no fluid) with the same Hertz–Mindlin law and
 parameters as the test granularBedAgainstLiggghts (E = 1e7 Pa, nu = 0.3,
 e_n = 0.5, mu = 0.5, rotation, dt = 2e-5 s), N = 1,000 and 5,000 ores, the
-first 0.2 s of the pour (the column falls and the bed forms: contacts
-everywhere at the bottom). The grains start on a jittered lattice, 1.25 d
+first 0.2 s of the pour: the column falls, its lowest layers reach the
+floor and pile up while the grains above are still falling (so contacts are
+fewer than in a settled bed). The grains start on a jittered lattice, 1.25 d
 apart, at rest.
 
 Both programs run alternately (LIGGGHTS 1 rank, LIGGGHTS 2 ranks, ours,
@@ -84,7 +85,7 @@ def main():
     ap.add_argument("--build", required=True)
     ap.add_argument("--results", required=True)
     args = ap.parse_args()
-    work = os.path.join(args.build, "granular")
+    work = os.path.join(os.path.abspath(args.build), "granular")
     os.makedirs(work, exist_ok=True)
     os.makedirs(args.results, exist_ok=True)
     engine = os.path.join(work, "granularBed")
