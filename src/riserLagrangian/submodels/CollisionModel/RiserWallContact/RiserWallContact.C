@@ -109,7 +109,8 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
         checkedEntry::count(this->coeffDict(), "maxSubCycles", 1, 100000000, 100000)
     ),
     addedMassCoeff_(readAddedMassCoeff()),
-    pairsInContact_(0)
+    pairsInContact_(0),
+    pairOverlapMax_(0)
 {
     if (this->coeffDict().found("pairs"))
     {
@@ -162,6 +163,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
     needs_(cm.needs_),
     pairsInContact_(cm.pairsInContact_),
+    pairOverlapMax_(cm.pairOverlapMax_),
     events_(cm.events_),
     lost_(cm.lost_)
 {}
@@ -360,6 +362,12 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
         Info<< "    riserWallContact: " << nNear << " particle(s) near "
             << (pairLaw_.valid() ? "a contact" : "the wall") << endl;
     }
+    if (pairLaw_.valid())
+    {
+        Info<< "    riserWallContact: largest pair overlap in this run "
+            << returnReduce(pairOverlapMax_, maxOp<scalar>())
+            << " of the smaller diameter" << endl;
+    }
     return nSub;
 }
 
@@ -465,6 +473,7 @@ void Foam::RiserWallContact<CloudType>::collidePairs()
             q.torque() += (Rq*n) ^ Ft;
         }
         ++pairsInContact_;
+        pairOverlapMax_ = max(pairOverlapMax_, geo.overlap/min(p.d(), q.d()));
     });
 }
 
