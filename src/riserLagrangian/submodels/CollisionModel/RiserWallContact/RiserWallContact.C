@@ -110,7 +110,8 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     ),
     addedMassCoeff_(readAddedMassCoeff()),
     pairsInContact_(0),
-    pairOverlapMax_(0)
+    pairOverlapMax_(0),
+    section_(riserSection(owner.mesh()))
 {
     if (this->coeffDict().found("pairs"))
     {
@@ -164,6 +165,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     needs_(cm.needs_),
     pairsInContact_(cm.pairsInContact_),
     pairOverlapMax_(cm.pairOverlapMax_),
+    section_(cm.section_),
     events_(cm.events_),
     lost_(cm.lost_)
 {}
@@ -243,6 +245,65 @@ void Foam::RiserWallContact<CloudType>::checkNeeded
 
 
 template<class CloudType>
+template<class PairFunction>
+void Foam::RiserWallContact<CloudType>::forEachNearPair
+(
+    const std::vector<riser::Vector>& x,
+    const scalar cutoff,
+    const PairFunction& f
+) const
+{
+    const std::size_t n = x.size();
+    // the centres, and images shifted by +-L of those within the cutoff of
+    // an end of a periodic section
+    std::vector<riser::Vector> all(x);
+    std::vector<std::size_t> original(n);
+    std::iota(original.begin(), original.end(), std::size_t(0));
+    std::vector<scalar> shift(n, 0);
+    if (section_.periodic)
+    {
+        const scalar L = section_.length;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            if (x[i].z() - section_.z0 < cutoff)
+            {
+                all.push_back(x[i] + riser::Vector(0, 0, L));
+                original.push_back(i);
+                shift.push_back(L);
+            }
+            if (section_.z0 + L - x[i].z() < cutoff)
+            {
+                all.push_back(x[i] - riser::Vector(0, 0, L));
+                original.push_back(i);
+                shift.push_back(-L);
+            }
+        }
+    }
+    riser::CellList cells;
+    cells.build(all, cutoff);
+    cells.forEachPair([&](std::size_t a, std::size_t b)
+    {
+        if (a >= n && b >= n)
+        {
+            return;     // two images: the pair is met through its originals
+        }
+        if (a >= n)
+        {
+            std::swap(a, b);
+        }
+        const std::size_t i = original[a], j = original[b];
+        // a pair across the ends appears twice (i with j's image, j with
+        // i's): kept once, with the image of the larger index
+        if (i == j || (b >= n && j < i))
+        {
+            return;
+        }
+        f(i, j, shift[b]);
+    });
+}
+
+
+template<class CloudType>
 void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
 {
     const scalar dt = this->owner().mesh().time().deltaTValue();
@@ -281,13 +342,12 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
             rMax = max(rMax, 0.5*parcels[i]->d());
             uMax = max(uMax, mag(parcels[i]->U()));
         }
-        riser::CellList cells;
-        cells.build(x, 2*rMax + 2*uMax*dt + SMALL);
-        cells.forEachPair([&](std::size_t i, std::size_t j)
+        forEachNearPair(x, 2*rMax + 2*uMax*dt + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
         {
             const parcelType& p = *parcels[i];
             const parcelType& q = *parcels[j];
-            const scalar gap = (x[j] - x[i]).norm() - 0.5*(p.d() + q.d());
+            const scalar gap =
+                (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(p.d() + q.d());
             const scalar speed = mag(p.U()) + mag(q.U());
             if (gap > speed*dt)
             {
@@ -416,9 +476,7 @@ void Foam::RiserWallContact<CloudType>::collidePairs()
         return;
     }
 
-    riser::CellList cells;
-    cells.build(x, 2*rMax);
-    cells.forEachPair([&](std::size_t a, std::size_t b)
+    forEachNearPair(x, 2*rMax, [&](std::size_t a, std::size_t b, scalar dz)
     {
         // the pair in a fixed order, so that the spring is read in one frame
         const bool aFirst =
@@ -426,9 +484,14 @@ void Foam::RiserWallContact<CloudType>::collidePairs()
           < labelPair(parcels[b]->origProc(), parcels[b]->origId());
         parcelType& p = aFirst ? *parcels[a] : *parcels[b];
         parcelType& q = aFirst ? *parcels[b] : *parcels[a];
+        // q's image nearest to p
+        const riser::Vector image(0, 0, aFirst ? dz : -dz);
         const scalar Rp = 0.5*p.d(), Rq = 0.5*q.d();
         const riser::PairGeometry geo =
-            riser::pairGeometry(toCore(p.position()), Rp, toCore(q.position()), Rq);
+            riser::pairGeometry
+            (
+                toCore(p.position()), Rp, toCore(q.position()) + image, Rq
+            );
         if (geo.overlap <= 0)
         {
             return;

@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserFillInjection.H"
-#include "cyclicPolyPatch.H"
+#include "riserSection.H"
 #include "boundBox.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
@@ -23,14 +23,10 @@ void Foam::RiserFillInjection<CloudType>::fill()
         checkedEntry::inRange(dict, "solidsFraction", 0, false, 0.5, true);
 
     // the section: the mesh's extent along the axis; periodic with cyclics
-    const boundBox bb(mesh.points(), true);
-    const scalar z0 = bb.min().z();
-    const scalar L = bb.max().z() - z0;
-    bool periodic = false;
-    for (const polyPatch& patch : mesh.boundaryMesh())
-    {
-        periodic = periodic || isA<cyclicPolyPatch>(patch);
-    }
+    const riserSectionExtent section = riserSection(mesh);
+    const scalar z0 = section.z0;
+    const scalar L = section.length;
+    const bool periodic = section.periodic;
     const scalar V = 0.25*pi*D*D*L;
 
     // the ends of a closed section are walls; a periodic one must not let
