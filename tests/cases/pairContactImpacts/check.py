@@ -63,6 +63,29 @@ for e in (0.3, 1.0):
     check("  e_n = %g: particle 0 after [m/s]" % e, U[0][0], w0, 5e-3, v0 - v1)
     check("  e_n = %g: particle 1 after [m/s]" % e, U[1][0], w1, 5e-3, v0 - v1)
 
+print("across the ends of a periodic section (cyclic bottom and top): they rebound too")
+name = "periodic"
+cases.wall_contact_case(name, D=0.1, radius=0.005, rho=rho, E=E, nu=nu, wall_E=E, wall_nu=nu,
+                        e_n=0.5, e_t=1.0, mu=0.0, velocities=[(0.0, -0.5), (0.0, 0.5)],
+                        positions=[(0.0, 0.0, 0.008), (0.0, 0.0, 0.092)], dt=dt, end=end,
+                        pairs=(0.76, 1.0, 0.0))
+mesh = os.path.join(name, "system", "blockMeshDict")
+text = open(mesh).read().replace(
+    "walls { type wall; faces ( (0 3 2 1) (4 5 6 7) (0 1 5 4) (1 2 6 5) (2 3 7 6) (3 0 4 7) ); }",
+    "walls { type wall; faces ( (0 1 5 4) (1 2 6 5) (2 3 7 6) (3 0 4 7) ); }\n"
+    "    bottom { type cyclic; neighbourPatch top; faces ( (0 3 2 1) ); }\n"
+    "    top { type cyclic; neighbourPatch bottom; faces ( (4 5 6 7) ); }")
+assert "cyclic" in text
+open(mesh, "w").write(text)
+path = os.path.join(name, "0", "U")
+text = open(path).read().replace(
+    "boundaryField { walls { type noSlip; } }",
+    "boundaryField { walls { type noSlip; } bottom { type cyclic; } top { type cyclic; } }")
+open(path, "w").write(text)
+U = final_velocities(name, end)
+check("  e_n = 0.76: particle 0 after/before", U[0][2] / 0.5, 0.76, 5e-3)
+check("  e_n = 0.76: particle 1 after/before", -U[1][2] / 0.5, 0.76, 5e-3)
+
 print("without pairs the two pass through each other")
 U = impact("noPairs", 0.01, 0.01, 0.5, -0.5, None)
 check("  particle 0 keeps its velocity", U[0][0], 0.5, 1e-9)
