@@ -342,17 +342,24 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
             rMax = max(rMax, 0.5*parcels[i]->d());
             uMax = max(uMax, mag(parcels[i]->U()));
         }
-        forEachNearPair(x, 2*rMax + 2*uMax*dt + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
+        // within a step a contact can speed a particle up to about twice
+        // the fastest particle's speed, so a pair may close by 4 U_max dt:
+        // a reach from each pair's own speeds would miss a resting
+        // particle struck by a neighbour and left to overlap the next
+        uMax = returnReduce(uMax, maxOp<scalar>());
+        const scalar reach = 4*uMax*dt;
+        forEachNearPair(x, 2*rMax + reach + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
         {
             const parcelType& p = *parcels[i];
             const parcelType& q = *parcels[j];
             const scalar gap =
                 (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(p.d() + q.d());
-            const scalar speed = mag(p.U()) + mag(q.U());
-            if (gap > speed*dt)
+            if (gap > reach)
             {
                 return;
             }
+            // the largest impact speed the pair can reach in the step
+            const scalar speed = max(mag(p.U()) + mag(q.U()), 2*uMax);
             const riser::ContactBody body =
                 riser::pairBody
                 (
