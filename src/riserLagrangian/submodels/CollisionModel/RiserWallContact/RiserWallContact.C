@@ -9,6 +9,7 @@
 #include "coreVector.H"
 #include "HistoryParcel.H"
 #include "granular/cellList.hpp"
+#include "granular/granularSystem.hpp"
 
 #include <numeric>
 #include <vector>
@@ -109,7 +110,6 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
         checkedEntry::count(this->coeffDict(), "maxSubCycles", 1, 100000000, 100000)
     ),
     addedMassCoeff_(readAddedMassCoeff()),
-    pairsInContact_(0),
     pairOverlapMax_(0),
     section_(riserSection(owner.mesh()))
 {
@@ -163,7 +163,6 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     addedMassCoeff_(cm.addedMassCoeff_),
     pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
     needs_(cm.needs_),
-    pairsInContact_(cm.pairsInContact_),
     pairOverlapMax_(cm.pairOverlapMax_),
     section_(cm.section_),
     events_(cm.events_),
@@ -318,6 +317,7 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         need.push_back(nearWallSubCycles(p));
     }
     const std::size_t n = parcels.size();
+    std::vector<bool> clustered(n, false);
 
     if (pairLaw_.valid() && n > 1)
     {
@@ -373,27 +373,34 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
             need[j] = max(need[j], k);
             root[find(i)] = find(j);
         });
-        std::vector<label> clusterNeed(n, 0);
+        std::vector<label> clusterNeed(n, 0), clusterSize(n, 0);
         for (std::size_t i = 0; i < n; ++i)
         {
             clusterNeed[find(i)] = max(clusterNeed[find(i)], need[i]);
+            ++clusterSize[find(i)];
         }
         for (std::size_t i = 0; i < n; ++i)
         {
             need[i] = clusterNeed[find(i)];
+            clustered[i] = clusterSize[find(i)] > 1;
         }
     }
 
     needs_.clear();
     for (std::size_t i = 0; i < n; ++i)
     {
-        needs_.set(labelPair(parcels[i]->origProc(), parcels[i]->origId()), need[i]);
+        needs_.set
+        (
+            labelPair(parcels[i]->origProc(), parcels[i]->origId()),
+            subCycleNeed{need[i], clustered[i]}
+        );
     }
 }
 
 
 template<class CloudType>
-Foam::label Foam::RiserWallContact<CloudType>::subCycles(const parcelType& p) const
+const typename Foam::RiserWallContact<CloudType>::subCycleNeed&
+Foam::RiserWallContact<CloudType>::need(const parcelType& p) const
 {
     const auto iter = needs_.cfind(labelPair(p.origProc(), p.origId()));
     if (!iter.found())
@@ -403,7 +410,21 @@ Foam::label Foam::RiserWallContact<CloudType>::subCycles(const parcelType& p) co
             << ") was not in the cloud when its need of sub-cycles was"
             << " prepared" << exit(FatalError);
     }
-    return max(*iter, label(1));
+    return *iter;
+}
+
+
+template<class CloudType>
+Foam::label Foam::RiserWallContact<CloudType>::subCycles(const parcelType& p) const
+{
+    return max(need(p).n, label(1));
+}
+
+
+template<class CloudType>
+bool Foam::RiserWallContact<CloudType>::clustered(const parcelType& p) const
+{
+    return need(p).clustered;
 }
 
 
@@ -414,7 +435,7 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
     label nSub = 1, nNear = 0;
     for (const parcelType& p : this->owner())
     {
-        const label n = needs_[labelPair(p.origProc(), p.origId())];
+        const label n = need(p).n;
         if (n > 0)
         {
             ++nNear;
@@ -477,7 +498,6 @@ void Foam::RiserWallContact<CloudType>::collidePairs()
         x.push_back(toCore(p.position()));
         rMax = max(rMax, 0.5*p.d());
     }
-    pairsInContact_ = 0;
     if (parcels.size() < 2)
     {
         return;
@@ -542,9 +562,264 @@ void Foam::RiserWallContact<CloudType>::collidePairs()
             p.torque() += (Rp*n) ^ Ft;
             q.torque() += (Rq*n) ^ Ft;
         }
-        ++pairsInContact_;
         pairOverlapMax_ = max(pairOverlapMax_, geo.overlap/min(p.d(), q.d()));
     });
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::checkInside
+(
+    const labelPair& key,
+    const scalar overlap,
+    const scalar R,
+    const scalar t
+)
+{
+    if (overlap > R && lost_.insert(key))
+    {
+        WarningInFunction
+            << "particle " << key << " has its centre outside the pipe at t = "
+            << t << ": " << overlap - R << " beyond the wall; "
+            << lost_.size() << " particle(s) lost so far" << endl;
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::wallContactGoesOn
+(
+    const labelPair& key,
+    const scalar t,
+    const scalar h,
+    const scalar overlap,
+    const scalar normalForce,
+    const vector& Urel,
+    const vector& n,
+    const vector& spin
+)
+{
+    auto iter = events_.find(key);
+    if (!iter.found())
+    {
+        events_.insert
+        (
+            key,
+            contactEvent{t - h, overlap, normalForce, Urel, Urel & n, spin}
+        );
+    }
+    else
+    {
+        contactEvent& e = *iter;
+        e.overlapMax = max(e.overlapMax, overlap);
+        e.normalForceMax = max(e.normalForceMax, normalForce);
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::wallContactEnds
+(
+    parcelType& p,
+    const labelPair& key,
+    const scalar t,
+    const vector& Uout,
+    const vector& n,
+    const vector& spin
+)
+{
+    auto iter = events_.find(key);
+    if (!iter.found())
+    {
+        return;
+    }
+    const contactEvent& e = *iter;
+    contactFile()
+        << key.first() << ' ' << key.second() << ' '
+        << e.start << ' ' << t << ' ' << t - e.start << ' '
+        << e.overlapMax << ' ' << e.normalForceMax << ' '
+        << e.velocityIn.x() << ' ' << e.velocityIn.y() << ' '
+        << e.velocityIn.z() << ' '
+        << Uout.x() << ' ' << Uout.y() << ' ' << Uout.z() << ' '
+        << e.spinIn.x() << ' ' << e.spinIn.y() << ' ' << e.spinIn.z() << ' '
+        << spin.x() << ' ' << spin.y() << ' ' << spin.z() << ' '
+        << e.normalSpeedIn << ' ' << -(Uout & n) << endl;
+    recordWallContact(p, e.overlapMax, e.normalSpeedIn);
+    events_.erase(iter);
+}
+
+
+template<class CloudType>
+Foam::List<Foam::contactStep>
+Foam::RiserWallContact<CloudType>::meshFreeContacts
+(
+    const UList<parcelType*>& parcels,
+    const UList<vector>& fluidAcceleration,
+    const label nSub
+)
+{
+    const Time& time = this->owner().mesh().time();
+    const riser::Wall& wall = carrier_.wall();
+    const scalar dt = time.deltaTValue();
+    const scalar t0 = time.value() - dt;
+    const scalar h = dt/max(nSub, label(1));
+    const label n = parcels.size();
+    List<contactStep> result(n);
+    if (n == 0)
+    {
+        return result;
+    }
+    if (!pairLaw_.valid())
+    {
+        FatalErrorInFunction
+            << "clustered particles without pair contact" << exit(FatalError);
+    }
+
+    // the particles at the step's start, with their springs and the
+    // contact forces of the last evaluation
+    riser::GranularSystem grains
+    (
+        pairLaw_(), law_, riser::Vector::Zero(), rotation_
+    );
+    grains.addWall(wall);
+    if (section_.periodic)
+    {
+        grains.setPeriodic(section_.z0, section_.length);
+    }
+    grains.setTime(t0);
+    HashTable<label, labelPair, labelPair::Hash<>> index(2*n);
+    List<labelPair> keys(n);
+    List<scalar> mEff(n);
+    forAll(parcels, i)
+    {
+        const parcelType& p = *parcels[i];
+        keys[i] = labelPair(p.origProc(), p.origId());
+        index.insert(keys[i], i);
+        mEff[i] = effectiveMass(p);
+        riser::Grain g
+        {
+            toCore(p.position()), toCore(p.U()),
+            rotation_ ? toCore(p.omega()) : riser::Vector::Zero(),
+            0.5*p.d(), mEff[i]
+        };
+        g.accel = toCore(fluidAcceleration[i]);
+        g.inertia = p.momentOfInertia();
+        grains.addGrain(g);
+    }
+    std::vector<riser::Vector> F(n), T(n);
+    forAll(parcels, i)
+    {
+        const parcelType& p = *parcels[i];
+        for (const auto& record : p.collisionRecords().pairRecords())
+        {
+            const auto j =
+                index.cfind
+                (
+                    labelPair(record.origProcOfOther(), record.origIdOfOther())
+                );
+            // each pair once, from the lower index (the spring in its frame)
+            if (j.found() && i < *j)
+            {
+                grains.setPairSpring(i, *j, toCore(record.collisionData()));
+            }
+        }
+        for (const auto& record : p.collisionRecords().wallRecords())
+        {
+            grains.setWallSpring(i, 0, toCore(record.collisionData()));
+        }
+        F[i] = toCore(p.f())*(mEff[i]/p.mass());
+        T[i] = rotation_ ? toCore(p.torque()) : riser::Vector::Zero();
+    }
+    grains.setContactForces(F, T);
+
+    // the wall contacts in progress, as collide() keeps them
+    std::vector<bool> inContact(n);
+    forAll(parcels, i)
+    {
+        inContact[i] = events_.found(keys[i]);
+    }
+
+    for (label k = 1; k <= nSub; ++k)
+    {
+        grains.step(h);
+        const scalar t = t0 + k*h;
+        pairOverlapMax_ = max(pairOverlapMax_, grains.largestPairOverlap());
+        forAll(parcels, i)
+        {
+            const riser::WallContactState& c = grains.wallContact(i, 0);
+            if (!c.touching && !inContact[i])
+            {
+                continue;
+            }
+            const riser::Grain& g = grains.grains()[i];
+            const riser::ContactPoint cp = wall.contactPoint(g.x, g.radius, t);
+            const vector nw = fromCore(cp.normal);
+            const vector Urel = fromCore(g.v - cp.velocity);
+            const vector spin = fromCore(g.omega);
+            if (c.touching)
+            {
+                checkInside(keys[i], c.overlap, g.radius, t);
+                wallContactGoesOn
+                (
+                    keys[i], t, h, c.overlap, c.normalForce, Urel, nw, spin
+                );
+                inContact[i] = true;
+            }
+            else
+            {
+                wallContactEnds(*parcels[i], keys[i], t, Urel, nw, spin);
+                inContact[i] = false;
+            }
+        }
+    }
+
+    // what the contacts added to the free motion, and the state handed back
+    forAll(parcels, i)
+    {
+        parcelType& p = *parcels[i];
+        const riser::Grain& g = grains.grains()[i];
+        const vector a = fluidAcceleration[i];
+        result[i].dx =
+            fromCore(g.x) - p.position() - dt*p.U() - (0.5*dt*dt)*a;
+        result[i].dU = fromCore(g.v) - p.U() - dt*a;
+        result[i].dL =
+            rotation_
+          ? vector(p.momentOfInertia()*fromCore(g.omega) - p.angularMomentum())
+          : vector::zero;
+        result[i].f = (p.mass()/mEff[i])*fromCore(grains.contactForce(i));
+        result[i].torque =
+            rotation_ ? fromCore(grains.contactTorque(i)) : vector::zero;
+
+        p.collisionRecords() =
+            typename std::decay<decltype(p.collisionRecords())>::type();
+        if (grains.wallContact(i, 0).touching)
+        {
+            const riser::ContactPoint cp =
+                wall.contactPoint(g.x, g.radius, time.value());
+            p.collisionRecords().matchWallRecord
+            (
+                0.99*g.radius*fromCore(cp.normal), g.radius
+            ).collisionData() = fromCore(grains.wallSpring(i, 0));
+        }
+    }
+    grains.forEachPairContact
+    (
+        [&](std::size_t i, std::size_t j, const riser::Vector& spring)
+        {
+            parcelType& p = *parcels[i];
+            parcelType& q = *parcels[j];
+            p.collisionRecords().matchPairRecord(q.origProc(), q.origId())
+                .collisionData() = fromCore(spring);
+            q.collisionRecords().matchPairRecord(p.origProc(), p.origId())
+                .collisionData() = -fromCore(spring);
+        }
+    );
+    for (parcelType* p : parcels)
+    {
+        // as after collide(): kept, marked not accessed
+        p->collisionRecords().update();
+    }
+    return result;
 }
 
 
@@ -566,39 +841,14 @@ void Foam::RiserWallContact<CloudType>::collide()
         const vector Uwall = fromCore(cp.velocity);
         const labelPair key(p.origProc(), p.origId());
 
-        if (cp.overlap > Rp && lost_.insert(key))
-        {
-            WarningInFunction
-                << "particle " << key << " has its centre outside the pipe at t = "
-                << t << ": " << cp.overlap - Rp << " beyond the wall; "
-                << lost_.size() << " particle(s) lost so far" << endl;
-        }
+        checkInside(key, cp.overlap, Rp, t);
 
         const vector spin = rotation_ ? p.omega() : vector::zero;
         const scalar overlap = cp.overlap;
 
         if (overlap <= 0)
         {
-            auto iter = events_.find(key);
-            if (iter.found())
-            {
-                const contactEvent& e = *iter;
-                const vector Uout = p.U() - Uwall;
-                contactFile()
-                    << key.first() << ' ' << key.second() << ' '
-                    << e.start << ' ' << t << ' ' << t - e.start << ' '
-                    << e.overlapMax << ' ' << e.normalForceMax << ' '
-                    << e.velocityIn.x() << ' ' << e.velocityIn.y() << ' '
-                    << e.velocityIn.z() << ' '
-                    << Uout.x() << ' ' << Uout.y() << ' ' << Uout.z() << ' '
-                    << e.spinIn.x() << ' ' << e.spinIn.y() << ' '
-                    << e.spinIn.z() << ' '
-                    << spin.x() << ' ' << spin.y() << ' ' << spin.z() << ' '
-                    << e.normalSpeedIn << ' '
-                    << -(Uout & fromCore(cp.normal)) << endl;
-                recordWallContact(p, e.overlapMax, e.normalSpeedIn);
-                events_.erase(iter);
-            }
+            wallContactEnds(p, key, t, p.U() - Uwall, fromCore(cp.normal), spin);
             // no record accessed: update() below drops the tangential spring
             continue;
         }
@@ -629,25 +879,7 @@ void Foam::RiserWallContact<CloudType>::collide()
             p.torque() = (Rp*n) ^ Ft;
         }
 
-        auto iter = events_.find(key);
-        if (!iter.found())
-        {
-            events_.insert
-            (
-                key,
-                contactEvent
-                {
-                    t - dt, overlap, mag(Fn), p.U() - Uwall, (p.U() - Uwall) & n,
-                    spin
-                }
-            );
-        }
-        else
-        {
-            contactEvent& e = *iter;
-            e.overlapMax = max(e.overlapMax, overlap);
-            e.normalForceMax = max(e.normalForceMax, mag(Fn));
-        }
+        wallContactGoesOn(key, t, dt, overlap, mag(Fn), p.U() - Uwall, n, spin);
     }
 
     if (pairLaw_.valid())
