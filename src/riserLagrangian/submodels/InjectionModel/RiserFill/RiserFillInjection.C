@@ -12,19 +12,18 @@
 template<class CloudType>
 void Foam::RiserFillInjection<CloudType>::fill()
 {
-    oreSource& source = *source_;
+    oreSource& source = *this->source_;
     using constant::mathematical::pi;
 
     const dictionary& dict = this->coeffDict();
     const polyMesh& mesh = this->owner().mesh();
-    const scalar D = carrier_.riser().diameter();
+    const scalar D = this->carrier_.riser().diameter();
     const scalar R = 0.5*D;
     const scalar Cv =
         checkedEntry::inRange(dict, "solidsFraction", 0, false, 0.5, true);
 
     // the section: the mesh's extent along the axis; periodic with cyclics
     const riserSectionExtent section = riserSection(mesh);
-    const scalar z0 = section.z0;
     const scalar L = section.length;
     const bool periodic = section.periodic;
     const scalar V = 0.25*pi*D*D*L;
@@ -56,8 +55,9 @@ void Foam::RiserFillInjection<CloudType>::fill()
           + binIndex(x.x(), -R, 2*R, nXY);
     };
 
-    DynamicList<vector> places;
-    DynamicList<scalar> diameters, densities;
+    // the ores placed so far: z along the section, from its start
+    DynamicList<vector>& places = this->places_;
+    const DynamicList<scalar>& diameters = this->diameters_;
     const scalar target = Cv*V;
     scalar placed = 0;
 
@@ -123,9 +123,7 @@ void Foam::RiserFillInjection<CloudType>::fill()
             if (isFree(x, r))
             {
                 bins[binOf(x)].append(places.size());
-                places.append(x);
-                diameters.append(o.d);
-                densities.append(o.rho);
+                this->addOre(x, o);
                 placed += o.volume();
                 done = true;
             }
@@ -152,13 +150,14 @@ void Foam::RiserFillInjection<CloudType>::fill()
             << exit(FatalIOError);
     }
 
-    places_.transfer(places);
-    diameters_.transfer(diameters);
-    densities_.transfer(densities);
-    z0_ = z0;
+    // the places' heights from the riser's axis point
+    for (vector& x : places)
+    {
+        x.z() += section.z0;
+    }
     this->volumeTotal_ = placed;
 
-    Info<< "    riserFill: placed " << places_.size() << " ores, solids"
+    Info<< "    riserFill: placed " << places.size() << " ores, solids"
         << " fraction C_v = " << placed/V << " (requested " << Cv
         << ") in the " << (periodic ? "periodic " : "") << "riser section of"
         << " length " << L << " m and volume " << V << " m^3" << endl;
@@ -175,38 +174,13 @@ Foam::RiserFillInjection<CloudType>::RiserFillInjection
     const word& modelName
 )
 :
-    InjectionModel<CloudType>(dict, owner, modelName, typeName),
-    carrier_(carrierFlow::New(owner.U())),
-    source_
+    RiserOreInjection<CloudType>
     (
-        std::make_shared<oreSource>
-        (
-            this->coeffDict(), carrier_, owner.constProps().dict(),
-            std::initializer_list<const char*>{"solidsFraction"},
-            this->parcelBasis_ == InjectionModel<CloudType>::pbFixed,
-            this->nParticleFixed_
-        )
-    ),
-    z0_(0)
+        dict, owner, modelName, typeName, {"solidsFraction"}
+    )
 {
     fill();
 }
-
-
-template<class CloudType>
-Foam::RiserFillInjection<CloudType>::RiserFillInjection
-(
-    const RiserFillInjection<CloudType>& im
-)
-:
-    InjectionModel<CloudType>(im),
-    carrier_(im.carrier_),
-    source_(im.source_),
-    places_(im.places_),
-    z0_(im.z0_),
-    diameters_(im.diameters_),
-    densities_(im.densities_)
-{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -219,7 +193,7 @@ Foam::label Foam::RiserFillInjection<CloudType>::parcelsToInject
 )
 {
     // times relative to SOI: all ores in the step that holds SOI
-    return (0 >= time0 && 0 < time1) ? places_.size() : 0;
+    return (0 >= time0 && 0 < time1) ? this->places_.size() : 0;
 }
 
 
@@ -231,43 +205,6 @@ Foam::scalar Foam::RiserFillInjection<CloudType>::volumeToInject
 )
 {
     return (0 >= time0 && 0 < time1) ? this->volumeTotal_ : 0;
-}
-
-
-template<class CloudType>
-void Foam::RiserFillInjection<CloudType>::setPositionAndCell
-(
-    const label parcelI,
-    const label,
-    const scalar,
-    vector& position,
-    label& cellOwner,
-    label& tetFacei,
-    label& tetPti
-)
-{
-    // the section about the riser's axis where the mesh is now
-    const vector& place = places_[parcelI];
-    position =
-        fromCore(carrier_.riser().motion().axis(this->owner().mesh().time().value()))
-      + vector(place.x(), place.y(), z0_ + place.z());
-    this->findCellAtPosition(cellOwner, tetFacei, tetPti, position, true);
-}
-
-
-template<class CloudType>
-void Foam::RiserFillInjection<CloudType>::setProperties
-(
-    const label parcelI,
-    const label,
-    const scalar,
-    typename CloudType::parcelType& parcel
-)
-{
-    parcel.d() = diameters_[parcelI];
-    parcel.rho() = densities_[parcelI];
-    parcel.U() =
-        source_->velocity(parcel.position(), this->owner().mesh().time().value());
 }
 
 

@@ -12,9 +12,9 @@
 template<class CloudType>
 void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt)
 {
-    oreSource& source = *source_;
+    oreSource& source = *this->source_;
     const scalar gap = source.gap();
-    const vector axis = fromCore(carrier_.riser().motion().axis(t));
+    const vector axis = this->axisPoint(t);
     // every ore within reach of a new one: below the slab of the step
     // (release speeds are at most 100 m/s) and an ore's reach above it
     const scalar zReach = z0_ + 2*(source.maxDiameter() + gap) + 100*dt;
@@ -40,6 +40,8 @@ void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt
     Pstream::scatterList(nearAll);
     Pstream::gatherList(nearAllD);
     Pstream::scatterList(nearAllD);
+    const DynamicList<vector>& places = this->places_;
+    const DynamicList<scalar>& diameters = this->diameters_;
     DynamicList<vector> nearX;
     DynamicList<scalar> nearD;
     for (label proci = 0; proci < Pstream::nProcs(); ++proci)
@@ -80,12 +82,10 @@ void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt
             x.z() = z0_ + r + gap + rise*source.uniform01();
             done =
                 keepsGap(x, r, nearX, nearD)
-             && keepsGap(x, r, places_, diameters_);
+             && keepsGap(x, r, places, diameters);
             if (done)
             {
-                places_.append(x);
-                diameters_.append(next_.d);
-                densities_.append(next_.rho);
+                this->addOre(x, next_);
             }
         }
         if (!done)
@@ -94,7 +94,7 @@ void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt
                 << "entry 'massFlowRate' = " << massFlowRate_ << " kg/s: at t = "
                 << t << " an ore (d = " << next_.d << " m) found no place at the"
                 << " inlet in " << source.maxAttempts() << " attempts, with "
-                << places_.size() << " ores released in this step and "
+                << places.size() << " ores released in this step and "
                 << nearX.size() << " near the inlet: the stream is too dense for the"
                 << " inlet, or its release velocity does not carry it into the"
                 << " riser; lower massFlowRate or release the ores faster"
@@ -116,17 +116,9 @@ Foam::RiserInletInjection<CloudType>::RiserInletInjection
     const word& modelName
 )
 :
-    InjectionModel<CloudType>(dict, owner, modelName, typeName),
-    carrier_(carrierFlow::New(owner.U())),
-    source_
+    RiserOreInjection<CloudType>
     (
-        std::make_shared<oreSource>
-        (
-            this->coeffDict(), carrier_, owner.constProps().dict(),
-            std::initializer_list<const char*>{"duration", "massFlowRate"},
-            this->parcelBasis_ == InjectionModel<CloudType>::pbFixed,
-            this->nParticleFixed_
-        )
+        dict, owner, modelName, typeName, {"duration", "massFlowRate"}
     ),
     duration_
     (
@@ -140,7 +132,7 @@ Foam::RiserInletInjection<CloudType>::RiserInletInjection
         )
     ),
     z0_(0),
-    next_(source_->draw())
+    next_(this->source_->draw())
 {
     const polyMesh& mesh = owner.mesh();
     for (const polyPatch& patch : mesh.boundaryMesh())
@@ -155,36 +147,18 @@ Foam::RiserInletInjection<CloudType>::RiserInletInjection
         }
     }
     z0_ = boundBox(mesh.points(), true).min().z();
-    source_->checkDiameters
+    const scalar D = this->carrier_.riser().diameter();
+    this->source_->checkDiameters
     (
         this->coeffDict(),
-        carrier_.riser().diameter() - 2*source_->gap(),
-        "riser D = " + Foam::name(carrier_.riser().diameter()) + " m"
+        D - 2*this->source_->gap(),
+        "riser D = " + Foam::name(D) + " m"
     );
     this->volumeTotal_ = massFlowRate_*duration_;
     Info<< "    riserInlet: " << massFlowRate_ << " kg/s of ores through the"
         << " inlet disc at z = " << z0_ << " m from t = " << this->SOI_
         << " s for " << duration_ << " s" << endl;
 }
-
-
-template<class CloudType>
-Foam::RiserInletInjection<CloudType>::RiserInletInjection
-(
-    const RiserInletInjection<CloudType>& im
-)
-:
-    InjectionModel<CloudType>(im),
-    carrier_(im.carrier_),
-    source_(im.source_),
-    duration_(im.duration_),
-    massFlowRate_(im.massFlowRate_),
-    z0_(im.z0_),
-    next_(im.next_),
-    places_(im.places_),
-    diameters_(im.diameters_),
-    densities_(im.densities_)
-{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -196,14 +170,12 @@ Foam::label Foam::RiserInletInjection<CloudType>::parcelsToInject
     const scalar time1
 )
 {
-    places_.clear();
-    diameters_.clear();
-    densities_.clear();
+    this->clearOres();
     if (time0 < duration_ && time1 > time0)
     {
         place(this->SOI_ + time1, time1 - time0);
     }
-    return places_.size();
+    return this->places_.size();
 }
 
 
@@ -216,46 +188,11 @@ Foam::scalar Foam::RiserInletInjection<CloudType>::volumeToInject
 {
     // the ores parcelsToInject placed for this step
     scalar V = 0;
-    forAll(diameters_, i)
+    for (const scalar d : this->diameters_)
     {
-        V += constant::mathematical::pi/6*pow3(diameters_[i]);
+        V += constant::mathematical::pi/6*pow3(d);
     }
     return V;
-}
-
-
-template<class CloudType>
-void Foam::RiserInletInjection<CloudType>::setPositionAndCell
-(
-    const label parcelI,
-    const label,
-    const scalar,
-    vector& position,
-    label& cellOwner,
-    label& tetFacei,
-    label& tetPti
-)
-{
-    position =
-        fromCore(carrier_.riser().motion().axis(this->owner().mesh().time().value()))
-      + places_[parcelI];
-    this->findCellAtPosition(cellOwner, tetFacei, tetPti, position, true);
-}
-
-
-template<class CloudType>
-void Foam::RiserInletInjection<CloudType>::setProperties
-(
-    const label parcelI,
-    const label,
-    const scalar,
-    typename CloudType::parcelType& parcel
-)
-{
-    parcel.d() = diameters_[parcelI];
-    parcel.rho() = densities_[parcelI];
-    parcel.U() =
-        source_->velocity(parcel.position(), this->owner().mesh().time().value());
 }
 
 
