@@ -10,6 +10,10 @@
 #include "HistoryParcel.H"
 #include "granular/cellList.hpp"
 #include "granular/granularSystem.hpp"
+#include "RiserCloud.H"
+#include "ListListOps.H"
+
+#include <algorithm>
 
 #include <numeric>
 #include <vector>
@@ -115,14 +119,6 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 {
     if (this->coeffDict().found("pairs"))
     {
-        if (Pstream::parRun())
-        {
-            FatalIOErrorInFunction(this->coeffDict())
-                << "entry 'pairs' (particle-particle contact) in a parallel"
-                << " run: pair contact runs on one processor in this version"
-                << " (pairs across processor boundaries are not exchanged);"
-                << " run serially or remove 'pairs'" << exit(FatalIOError);
-        }
         pairLaw_.reset
         (
             new riser::HertzMindlin
@@ -214,7 +210,11 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
     const scalar tc = law_.contactTime(body, max(speed, SMALL));
     // as a scalar first: no overflow of the label
     const scalar needed = ceil(stepsPerContact_*dt/tc);
-    checkNeeded(needed, p, tc, "wall contact");
+    checkNeeded
+    (
+        needed, labelPair(p.origProc(), p.origId()), p.position(), tc,
+        "wall contact"
+    );
     return max(label(needed), label(1));
 }
 
@@ -223,19 +223,20 @@ template<class CloudType>
 void Foam::RiserWallContact<CloudType>::checkNeeded
 (
     const scalar needed,
-    const parcelType& p,
+    const labelPair& key,
+    const vector& position,
     const scalar tc,
-    const word& what
+    const string& what
 ) const
 {
     if (!(needed <= maxSubCycles_))
     {
         FatalErrorInFunction
-            << "particle " << p.origId() << " (processor " << p.origProc()
-            << ") at " << p.position() << " needs " << needed
+            << "particle " << key.second() << " (processor " << key.first()
+            << ") at " << position << " needs " << needed
             << " sub-cycles of the step deltaT = "
             << this->owner().mesh().time().deltaTValue() << " to resolve"
-            << " its " << what << " (contact time " << tc << " s, "
+            << " its " << what.c_str() << " (contact time " << tc << " s, "
             << stepsPerContact_ << " sub-cycles each), more than"
             << " maxSubCycles = " << maxSubCycles_ << ": reduce deltaT or"
             << " raise maxSubCycles" << exit(FatalError);
@@ -302,97 +303,173 @@ void Foam::RiserWallContact<CloudType>::forEachNearPair
 }
 
 
+namespace Foam
+{
+    //- The lists of all processors joined, in processor order, on every
+    //  processor
+    template<class T>
+    List<T> gatheredFromAll(const UList<T>& local)
+    {
+        List<List<T>> all(Pstream::nProcs());
+        all[Pstream::myProcNo()] = local;
+        Pstream::gatherList(all);
+        Pstream::scatterList(all);
+        return ListListOps::combine<List<T>>(all, accessOp<List<T>>());
+    }
+
+    //- The order that sorts keys (origProc, origId)
+    inline std::vector<label> keyOrder(const UList<labelPair>& keys)
+    {
+        std::vector<label> order(keys.size());
+        std::iota(order.begin(), order.end(), label(0));
+        std::sort
+        (
+            order.begin(), order.end(),
+            [&keys](label a, label b) { return keys[a] < keys[b]; }
+        );
+        return order;
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::checkPairsRunHere() const
+{
+    if
+    (
+        pairLaw_.valid() && Pstream::parRun()
+     && !dynamic_cast<const RiserCloud<CloudType>*>(&this->owner())
+    )
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "entry 'pairs' (particle-particle contact) in a parallel run"
+            << " of a stock colliding cloud: across processor boundaries"
+            << " pairs are handled by the riser cloud (riserParcelFoam)"
+            << " only; run serially or with riserParcelFoam"
+            << exit(FatalIOError);
+    }
+}
+
+
 template<class CloudType>
 void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
 {
+    checkPairsRunHere();
     const scalar dt = this->owner().mesh().time().deltaTValue();
 
-    std::vector<const parcelType*> parcels;
-    parcels.reserve(this->owner().size());
-    std::vector<label> need;
-    need.reserve(this->owner().size());
-    for (const parcelType& p : this->owner())
+    // this processor's particles: key, wall need
+    const label nOwn = this->owner().size();
+    List<labelPair> ownKeys(nOwn);
+    labelList ownNeed(nOwn);
     {
-        parcels.push_back(&p);
-        need.push_back(nearWallSubCycles(p));
-    }
-    const std::size_t n = parcels.size();
-    std::vector<bool> clustered(n, false);
-
-    if (pairLaw_.valid() && n > 1)
-    {
-        // clusters of particles that may touch within the step: union-find
-        std::vector<std::size_t> root(n);
-        std::iota(root.begin(), root.end(), std::size_t(0));
-        auto find = [&root](std::size_t i)
+        label i = 0;
+        for (const parcelType& p : this->owner())
         {
-            while (root[i] != i)
-            {
-                root[i] = root[root[i]];
-                i = root[i];
-            }
-            return i;
-        };
-
-        std::vector<riser::Vector> x(n);
-        scalar rMax = 0, uMax = 0;
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            x[i] = toCore(parcels[i]->position());
-            rMax = max(rMax, 0.5*parcels[i]->d());
-            uMax = max(uMax, mag(parcels[i]->U()));
-        }
-        // within a step a contact can speed a particle up to about twice
-        // the fastest particle's speed, so a pair may close by 4 U_max dt:
-        // a reach from each pair's own speeds would miss a resting
-        // particle struck by a neighbour and left to overlap the next
-        uMax = returnReduce(uMax, maxOp<scalar>());
-        const scalar reach = 4*uMax*dt;
-        forEachNearPair(x, 2*rMax + reach + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
-        {
-            const parcelType& p = *parcels[i];
-            const parcelType& q = *parcels[j];
-            const scalar gap =
-                (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(p.d() + q.d());
-            if (gap > reach)
-            {
-                return;
-            }
-            // the largest impact speed the pair can reach in the step
-            const scalar speed = max(mag(p.U()) + mag(q.U()), 2*uMax);
-            const riser::ContactBody body =
-                riser::pairBody
-                (
-                    0.5*p.d(), effectiveMass(p), 0.5*q.d(), effectiveMass(q)
-                );
-            const scalar tc = pairLaw_->contactTime(body, max(speed, SMALL));
-            const scalar needed = ceil(stepsPerContact_*dt/tc);
-            checkNeeded(needed, p, tc, "contact with particle " + Foam::name(q.origId()));
-            const label k = max(label(needed), label(1));
-            need[i] = max(need[i], k);
-            need[j] = max(need[j], k);
-            root[find(i)] = find(j);
-        });
-        std::vector<label> clusterNeed(n, 0), clusterSize(n, 0);
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            clusterNeed[find(i)] = max(clusterNeed[find(i)], need[i]);
-            ++clusterSize[find(i)];
-        }
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            need[i] = clusterNeed[find(i)];
-            clustered[i] = clusterSize[find(i)] > 1;
+            ownKeys[i] = labelPair(p.origProc(), p.origId());
+            ownNeed[i] = nearWallSubCycles(p);
+            ++i;
         }
     }
-
     needs_.clear();
+    if (!pairLaw_.valid())
+    {
+        forAll(ownKeys, i)
+        {
+            needs_.set(ownKeys[i], subCycleNeed{ownNeed[i], false});
+        }
+        return;
+    }
+
+    // with pairs: the clusters of the particles of all processors (each
+    // processor finds the same), by key order
+    List<vector> ownX(nOwn), ownU(nOwn);
+    List<scalar> ownD(nOwn), ownM(nOwn);
+    {
+        label i = 0;
+        for (const parcelType& p : this->owner())
+        {
+            ownX[i] = p.position();
+            ownU[i] = p.U();
+            ownD[i] = p.d();
+            ownM[i] = effectiveMass(p);
+            ++i;
+        }
+    }
+    const List<labelPair> allKeys = gatheredFromAll(ownKeys);
+    const std::vector<label> order = keyOrder(allKeys);
+    const List<vector> allX = gatheredFromAll(ownX), allU = gatheredFromAll(ownU);
+    const List<scalar> allD = gatheredFromAll(ownD), allM = gatheredFromAll(ownM);
+    const labelList allNeed = gatheredFromAll(ownNeed);
+    const std::size_t n = order.size();
+
+    std::vector<riser::Vector> x(n);
+    std::vector<label> need(n);
+    scalar rMax = 0, uMax = 0;
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const label k = order[i];
+        x[i] = toCore(allX[k]);
+        need[i] = allNeed[k];
+        rMax = max(rMax, 0.5*allD[k]);
+        uMax = max(uMax, mag(allU[k]));
+    }
+
+    // clusters of particles that may touch within the step: union-find
+    std::vector<std::size_t> root(n);
+    std::iota(root.begin(), root.end(), std::size_t(0));
+    auto find = [&root](std::size_t i)
+    {
+        while (root[i] != i)
+        {
+            root[i] = root[root[i]];
+            i = root[i];
+        }
+        return i;
+    };
+    // within a step a contact can speed a particle up to about twice the
+    // fastest particle's speed, so a pair may close by 4 U_max dt: a reach
+    // from each pair's own speeds would miss a resting particle struck by
+    // a neighbour and left to overlap the next
+    const scalar reach = 4*uMax*dt;
+    forEachNearPair(x, 2*rMax + reach + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
+    {
+        const label p = order[i], q = order[j];
+        const scalar gap =
+            (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(allD[p] + allD[q]);
+        if (gap > reach)
+        {
+            return;
+        }
+        // the largest impact speed the pair can reach in the step
+        const scalar speed = max(mag(allU[p]) + mag(allU[q]), 2*uMax);
+        const riser::ContactBody body =
+            riser::pairBody(0.5*allD[p], allM[p], 0.5*allD[q], allM[q]);
+        const scalar tc = pairLaw_->contactTime(body, max(speed, SMALL));
+        const scalar needed = ceil(stepsPerContact_*dt/tc);
+        checkNeeded
+        (
+            needed, allKeys[p], allX[p], tc,
+            "contact with particle " + Foam::name(allKeys[q].second())
+          + " (processor " + Foam::name(allKeys[q].first()) + ")"
+        );
+        const label k = max(label(needed), label(1));
+        need[i] = max(need[i], k);
+        need[j] = max(need[j], k);
+        root[find(i)] = find(j);
+    });
+    std::vector<label> clusterNeed(n, 0), clusterSize(n, 0);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        clusterNeed[find(i)] = max(clusterNeed[find(i)], need[i]);
+        ++clusterSize[find(i)];
+    }
+    // (every processor keeps the needs of all: the gathered lists hold them)
     for (std::size_t i = 0; i < n; ++i)
     {
         needs_.set
         (
-            labelPair(parcels[i]->origProc(), parcels[i]->origId()),
-            subCycleNeed{need[i], clustered[i]}
+            allKeys[order[i]],
+            subCycleNeed{clusterNeed[find(i)], clusterSize[find(i)] > 1}
         );
     }
 }
@@ -650,7 +727,7 @@ void Foam::RiserWallContact<CloudType>::wallContactEnds
 
 
 template<class CloudType>
-Foam::List<Foam::contactStep>
+Foam::contactSteps
 Foam::RiserWallContact<CloudType>::meshFreeContacts
 (
     const UList<parcelType*>& parcels,
@@ -663,79 +740,136 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
     const scalar h = dt/max(nSub, label(1));
-    const label n = parcels.size();
-    List<contactStep> result(n);
-    if (n == 0)
-    {
-        return result;
-    }
+    const label nOwn = parcels.size();
     if (!pairLaw_.valid())
     {
         FatalErrorInFunction
             << "clustered particles without pair contact" << exit(FatalError);
     }
 
-    // the particles at the step's start, with their springs and the
-    // contact forces of the last evaluation
-    riser::GranularSystem grains
+    // this processor's particles at the step's start: state, springs
+    // (pair records flattened: owner, other, spring) and contact forces
+    List<labelPair> keys(nOwn);
+    List<vector> x(nOwn), U(nOwn), omega(nOwn), a(nOwn), F(nOwn), T(nOwn), wallSpring(nOwn);
+    List<scalar> R(nOwn), mEff(nOwn), mP(nOwn), inertia(nOwn);
+    labelList touchingWall(nOwn, 0);
+    DynamicList<labelPair> recordOwner, recordOther;
+    DynamicList<vector> recordSpring;
+    forAll(parcels, i)
+    {
+        const parcelType& p = *parcels[i];
+        keys[i] = labelPair(p.origProc(), p.origId());
+        x[i] = p.position();
+        U[i] = p.U();
+        omega[i] = rotation_ ? p.omega() : vector::zero;
+        a[i] = fluidAcceleration[i];
+        R[i] = 0.5*p.d();
+        mEff[i] = effectiveMass(p);
+        mP[i] = p.mass();
+        inertia[i] = p.momentOfInertia();
+        F[i] = p.f()*(mEff[i]/p.mass());
+        T[i] = rotation_ ? p.torque() : vector::zero;
+        wallSpring[i] = vector::zero;
+        for (const auto& record : p.collisionRecords().wallRecords())
+        {
+            wallSpring[i] = record.collisionData();
+            touchingWall[i] = 1;
+        }
+        for (const auto& record : p.collisionRecords().pairRecords())
+        {
+            recordOwner.append(keys[i]);
+            recordOther.append
+            (
+                labelPair(record.origProcOfOther(), record.origIdOfOther())
+            );
+            recordSpring.append(record.collisionData());
+        }
+    }
+
+    // the clusters of this group on all processors: every processor steps
+    // all of them and keeps what is its own. They enter the engine in the
+    // order of their positions (by z, then x, then y), which does not
+    // depend on the decomposition (their keys do: each processor numbers
+    // the particles it injects), so that the contact forces are summed in
+    // the same order in a serial and a parallel run.
+    const List<labelPair> allKeys = gatheredFromAll(keys);
+    const List<vector> allX = gatheredFromAll(x), allU = gatheredFromAll(U);
+    std::vector<label> order(allX.size());
+    std::iota(order.begin(), order.end(), label(0));
+    std::sort
     (
-        pairLaw_(), law_, riser::Vector::Zero(), rotation_
+        order.begin(), order.end(),
+        [&allX](label a, label b)
+        {
+            const vector& p = allX[a];
+            const vector& q = allX[b];
+            return
+                p.z() < q.z()
+             || (p.z() == q.z() && (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y())));
+        }
     );
+    const List<vector> allOmega = gatheredFromAll(omega), allA = gatheredFromAll(a);
+    const List<vector> allF = gatheredFromAll(F), allT = gatheredFromAll(T);
+    const List<vector> allWallSpring = gatheredFromAll(wallSpring);
+    const List<scalar> allR = gatheredFromAll(R), allM = gatheredFromAll(mEff);
+    const List<scalar> allInertia = gatheredFromAll(inertia);
+    const List<scalar> allMp = gatheredFromAll(mP);
+    const labelList allTouchingWall = gatheredFromAll(touchingWall);
+    const List<labelPair> allRecordOwner = gatheredFromAll(recordOwner);
+    const List<labelPair> allRecordOther = gatheredFromAll(recordOther);
+    const List<vector> allRecordSpring = gatheredFromAll(recordSpring);
+    const std::size_t n = order.size();
+
+    riser::GranularSystem grains(pairLaw_(), law_, riser::Vector::Zero(), rotation_);
     grains.addWall(wall);
     if (section_.periodic)
     {
         grains.setPeriodic(section_.z0, section_.length);
     }
     grains.setTime(t0);
-    HashTable<label, labelPair, labelPair::Hash<>> index(2*n);
-    List<labelPair> keys(n);
-    List<scalar> mEff(n);
-    forAll(parcels, i)
+    HashTable<label, labelPair, labelPair::Hash<>> grainOf(2*n);
+    std::vector<riser::Vector> grainF(n), grainT(n);
+    for (std::size_t i = 0; i < n; ++i)
     {
-        const parcelType& p = *parcels[i];
-        keys[i] = labelPair(p.origProc(), p.origId());
-        index.insert(keys[i], i);
-        mEff[i] = effectiveMass(p);
+        const label k = order[i];
+        grainOf.insert(allKeys[k], label(i));
         riser::Grain g
         {
-            toCore(p.position()), toCore(p.U()),
-            rotation_ ? toCore(p.omega()) : riser::Vector::Zero(),
-            0.5*p.d(), mEff[i]
+            toCore(allX[k]), toCore(allU[k]), toCore(allOmega[k]), allR[k], allM[k]
         };
-        g.accel = toCore(fluidAcceleration[i]);
-        g.inertia = p.momentOfInertia();
+        g.accel = toCore(allA[k]);
+        g.inertia = allInertia[k];
         grains.addGrain(g);
+        grainF[i] = toCore(allF[k]);
+        grainT[i] = toCore(allT[k]);
     }
-    std::vector<riser::Vector> F(n), T(n);
-    forAll(parcels, i)
+    for (std::size_t i = 0; i < n; ++i)
     {
-        const parcelType& p = *parcels[i];
-        for (const auto& record : p.collisionRecords().pairRecords())
+        if (allTouchingWall[order[i]])
         {
-            const auto j =
-                index.cfind
-                (
-                    labelPair(record.origProcOfOther(), record.origIdOfOther())
-                );
-            // each pair once, from the lower index (the spring in its frame)
-            if (j.found() && i < *j)
-            {
-                grains.setPairSpring(i, *j, toCore(record.collisionData()));
-            }
+            grains.setWallSpring(i, 0, toCore(allWallSpring[order[i]]));
         }
-        for (const auto& record : p.collisionRecords().wallRecords())
-        {
-            grains.setWallSpring(i, 0, toCore(record.collisionData()));
-        }
-        F[i] = toCore(p.f())*(mEff[i]/p.mass());
-        T[i] = rotation_ ? toCore(p.torque()) : riser::Vector::Zero();
     }
-    grains.setContactForces(F, T);
+    forAll(allRecordOwner, r)
+    {
+        // each pair once, from the record of the particle first in order
+        // (the spring in its frame)
+        const auto i = grainOf.cfind(allRecordOwner[r]);
+        const auto j = grainOf.cfind(allRecordOther[r]);
+        if (i.found() && j.found() && *i < *j)
+        {
+            grains.setPairSpring(*i, *j, toCore(allRecordSpring[r]));
+        }
+    }
+    grains.setContactForces(grainF, grainT);
 
-    // the wall contacts in progress, as collide() keeps them
-    std::vector<bool> inContact(n);
+    // this processor's particles among the grains; their wall contacts in
+    // progress, as collide() keeps them
+    std::vector<label> ownGrain(nOwn);
+    std::vector<bool> inContact(nOwn);
     forAll(parcels, i)
     {
+        ownGrain[i] = grainOf[keys[i]];
         inContact[i] = events_.found(keys[i]);
     }
 
@@ -746,12 +880,12 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         pairOverlapMax_ = max(pairOverlapMax_, grains.largestPairOverlap());
         forAll(parcels, i)
         {
-            const riser::WallContactState& c = grains.wallContact(i, 0);
+            const riser::WallContactState& c = grains.wallContact(ownGrain[i], 0);
             if (!c.touching && !inContact[i])
             {
                 continue;
             }
-            const riser::Grain& g = grains.grains()[i];
+            const riser::Grain& g = grains.grains()[ownGrain[i]];
             const riser::ContactPoint cp = wall.contactPoint(g.x, g.radius, t);
             const vector nw = fromCore(cp.normal);
             const vector Urel = fromCore(g.v - cp.velocity);
@@ -773,47 +907,71 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         }
     }
 
-    // what the contacts added to the free motion, and the state handed back
+    // what the contacts added to the free motion of every particle of the
+    // group (a particle may change processor in its move through the mesh),
+    // and the state handed back to this processor's particles
+    contactSteps result(2*n);
+    for (std::size_t i = 0; i < n; ++i)
+    {
+        const label k = order[i];
+        const riser::Grain& g = grains.grains()[i];
+        contactStep c;
+        c.dx = fromCore(g.x) - allX[k] - dt*allU[k] - (0.5*dt*dt)*allA[k];
+        c.dU = fromCore(g.v) - allU[k] - dt*allA[k];
+        c.dL = allInertia[k]*(fromCore(g.omega) - allOmega[k]);
+        c.f = (allMp[k]/allM[k])*fromCore(grains.contactForce(i));
+        c.torque = rotation_ ? fromCore(grains.contactTorque(i)) : vector::zero;
+        result.insert(allKeys[k], c);
+    }
+    HashTable<parcelType*, labelPair, labelPair::Hash<>> ownParcel(2*nOwn);
     forAll(parcels, i)
     {
         parcelType& p = *parcels[i];
-        const riser::Grain& g = grains.grains()[i];
-        const vector a = fluidAcceleration[i];
-        result[i].dx =
-            fromCore(g.x) - p.position() - dt*p.U() - (0.5*dt*dt)*a;
-        result[i].dU = fromCore(g.v) - p.U() - dt*a;
-        result[i].dL =
-            rotation_
-          ? vector(p.momentOfInertia()*fromCore(g.omega) - p.angularMomentum())
-          : vector::zero;
-        result[i].f = (p.mass()/mEff[i])*fromCore(grains.contactForce(i));
-        result[i].torque =
-            rotation_ ? fromCore(grains.contactTorque(i)) : vector::zero;
-
+        ownParcel.insert(keys[i], &p);
+        const label gi = ownGrain[i];
+        const riser::Grain& g = grains.grains()[gi];
         p.collisionRecords() =
             typename std::decay<decltype(p.collisionRecords())>::type();
-        if (grains.wallContact(i, 0).touching)
+        if (grains.wallContact(gi, 0).touching)
         {
             const riser::ContactPoint cp =
                 wall.contactPoint(g.x, g.radius, time.value());
             p.collisionRecords().matchWallRecord
             (
                 0.99*g.radius*fromCore(cp.normal), g.radius
-            ).collisionData() = fromCore(grains.wallSpring(i, 0));
+            ).collisionData() = fromCore(grains.wallSpring(gi, 0));
         }
     }
+    label acrossProcessors = 0;
     grains.forEachPairContact
     (
         [&](std::size_t i, std::size_t j, const riser::Vector& spring)
         {
-            parcelType& p = *parcels[i];
-            parcelType& q = *parcels[j];
-            p.collisionRecords().matchPairRecord(q.origProc(), q.origId())
-                .collisionData() = fromCore(spring);
-            q.collisionRecords().matchPairRecord(p.origProc(), p.origId())
-                .collisionData() = -fromCore(spring);
+            const labelPair& ki = allKeys[order[i]];
+            const labelPair& kj = allKeys[order[j]];
+            const auto p = ownParcel.cfind(ki);
+            if (p.found())
+            {
+                (*p)->collisionRecords().matchPairRecord(kj.first(), kj.second())
+                    .collisionData() = fromCore(spring);
+            }
+            const auto q = ownParcel.cfind(kj);
+            if (q.found())
+            {
+                (*q)->collisionRecords().matchPairRecord(ki.first(), ki.second())
+                    .collisionData() = -fromCore(spring);
+            }
+            acrossProcessors += (p.found() != q.found());
         }
     );
+    if (Pstream::parRun())
+    {
+        // (each such pair is counted by both of its processors)
+        Info<< "    riserWallContact: " << grains.pairContacts()
+            << " pair(s) in contact, "
+            << returnReduce(acrossProcessors, sumOp<label>())/2
+            << " across processor boundaries" << endl;
+    }
     for (parcelType* p : parcels)
     {
         // as after collide(): kept, marked not accessed
