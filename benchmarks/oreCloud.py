@@ -1,17 +1,20 @@
-"""A shaken cloud of 1,000 ores in riserParcelFoam, with wall contact only
-and with particle-particle contact (riserWallContact's pairs): the scene of
-the many-ore work. 10 mm ores (2000 kg/m^3, the flagship's material) fill a
-1 m periodic riser section (D = 0.1 m, riserMesh -n 12, cyclic ends) at
-C_v = 0.0667 (riserFill, seed 1, at rest relative to the carrier); riser
-frame, exact carrier, the flagship's forces with Basset; the riser shakes
-at A = 0.2 m, f = 4 Hz; dt = 1e-4 s, stepsPerContact 10; 0.5 s (quick:
-0.05 s). No per-particle output.
+"""A shaken cloud of 1,000 ores in riserParcelFoam without contact, with
+wall contact only and with particle-particle contact (riserWallContact's
+pairs): the scenes of the many-ore work. 10 mm ores (2000 kg/m^3, the
+flagship's material) fill a 1 m periodic riser section (D = 0.1 m,
+riserMesh -n 12, cyclic ends) at C_v = 0.0667 (riserFill, seed 1, at rest
+relative to the carrier); riser frame, exact carrier, the flagship's
+forces with Basset; the riser shakes at A = 0.2 m, f = 4 Hz and at
+A = 2 m, f = 0.4 Hz (the same largest riser speed, 5 m/s); dt = 1e-4 s,
+stepsPerContact 10; 0.5 s (quick: 0.05 s). No per-particle output.
 
-Reported per variant: CPU time of the solver (user + sys), the parcels at
-the start and the end, particles reported outside the pipe, the largest
-number of particles near a contact in a step and of sub-cycles, and with
-pairs the largest pair overlap of the run (fraction of d; the log's
-riserWallContact line).
+Reported per scene and variant: CPU time of the solver (user + sys) and its
+ratio to the same scene without contact (collisionModel none: the ores
+then bounce off the mesh's wall, the stock patch interaction), the parcels
+at the start and the end, particles reported outside the pipe, the largest
+number of particles near a contact in a step, of tracked sub-cycles and of
+clustered particles and their contact sub-steps, and with pairs the largest
+pair overlap of the run (fraction of d; the log's riserWallContact line).
 
 usage: oreCloud.py [--quick] --build DIR --results DIR
 writes <results>/oreCloud.json and <results>/oreCloud.md
@@ -28,10 +31,15 @@ import time
 
 from riserfoam import cases
 
+# variant: (collision model, pairs)
 VARIANTS = {
-    "wall": None,
-    "wall+pairs": "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }",
+    "none": ("none", None),
+    "wall": ("riserWallContact", None),
+    "wall+pairs": ("riserWallContact",
+                   "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }"),
 }
+# scene: riser amplitude [m] and frequency [Hz]
+SCENES = {"A0.2_f4": (0.2, 4.0), "A2_f0.4": (2.0, 0.4)}
 
 
 def set_entry(path, entry, value):
@@ -44,12 +52,12 @@ def remove_entry(path, entry):
                    check=True, stdout=subprocess.DEVNULL)
 
 
-def make(case, end, pairs):
+def make(case, end, A, f, collision, pairs):
     cases.copy_tutorial("riser/oscillatingContact", case)
     cases.riser_mesh(case, D=0.1, L=1.0, n=12)
     props = os.path.join(case, "constant", "riserProperties")
-    set_entry(props, "A", "0.2")
-    set_entry(props, "f", "4")
+    set_entry(props, "A", repr(A))
+    set_entry(props, "f", repr(f))
     control = os.path.join(case, "system", "controlDict")
     for entry, value in (("deltaT", "1e-4"), ("endTime", repr(end)), ("writeInterval", repr(end))):
         set_entry(control, entry, value)
@@ -61,6 +69,7 @@ def make(case, end, pairs):
               " solidsFraction 0.0667; seed 1; velocity carrier;"
               " sizeDistribution { type fixedValue; fixedValueDistribution { value 0.01; } } } }")
     set_entry(cloud, "subModels/riserWallContactCoeffs/stepsPerContact", "10")
+    set_entry(cloud, "subModels/collisionModel", collision)
     if pairs:
         set_entry(cloud, "subModels/riserWallContactCoeffs/pairs", pairs)
 
@@ -76,6 +85,7 @@ def run(case):
     counts = [int(c) for c in re.findall(r"Current number of parcels\s*=\s*(\d+)", text)]
     near = [int(c) for c in re.findall(r"(\d+) particle\(s\) near", text)] or [0]
     sub = [int(c) for c in re.findall(r"(\d+) move-collide subCycles", text)] or [1]
+    clustered = re.findall(r"(\d+) clustered particle\(s\): (\d+) contact sub-steps", text)
     overlap = re.findall(r"largest pair overlap in this run (\S+)", text)
     placed = re.search(r"riserFill: placed (\d+) ores, solids fraction C_v = (\S+)", text)
     return {
@@ -87,6 +97,8 @@ def run(case):
         "outside_pipe_reports": text.count("outside the pipe"),
         "max_near": max(near),
         "max_subcycles": max(sub),
+        "max_clustered": max([int(c) for c, _ in clustered] or [0]),
+        "max_contact_substeps": max([int(k) for _, k in clustered] or [0]),
         "largest_pair_overlap_of_d": float(overlap[-1]) if overlap else None,
     }
 
@@ -101,30 +113,40 @@ def main():
     work = os.path.join(os.path.abspath(args.build), "oreCloud")
     os.makedirs(args.results, exist_ok=True)
     rows = {}
-    for name, pairs in VARIANTS.items():
-        case = os.path.join(work, name.replace("+", "_"))
-        make(case, end, pairs)
-        rows[name] = run(case)
-        print("%-10s %s" % (name, rows[name]))
+    for scene, (A, f) in SCENES.items():
+        rows[scene] = {}
+        for name, (collision, pairs) in VARIANTS.items():
+            case = os.path.join(work, scene, name.replace("+", "_"))
+            make(case, end, A, f, collision, pairs)
+            r = run(case)
+            r["ratio_to_none"] = r["cpu_s"]/rows[scene]["none"]["cpu_s"] if name != "none" else 1.0
+            rows[scene][name] = r
+            print("%-8s %-10s %s" % (scene, name, r))
     result = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
               "quick": args.quick, "simulated_s": end, "load": open("/proc/loadavg").read().split()[:3],
-              "variants": rows}
-    with open(os.path.join(args.results, "oreCloud.json"), "w") as f:
-        json.dump(result, f, indent=1)
-    with open(os.path.join(args.results, "oreCloud.md"), "w") as f:
-        f.write("# 1,000 shaken ores in riserParcelFoam (benchmarks/oreCloud.py%s)\n\n"
-                % (" --quick" if args.quick else ""))
-        f.write("Measured %s, %g s simulated, load average %s; CPU seconds of the solver.\n\n"
-                % (result["date"], end, " ".join(result["load"])))
-        f.write("| contact | ores placed (C_v) | CPU s | ores at the end | outside-pipe reports | "
-                "most near a contact | most sub-cycles | largest pair overlap / d |\n"
-                "|---|---|---|---|---|---|---|---|\n")
-        for name, r in rows.items():
-            f.write("| %s | %s (%s) | %.1f | %s | %d | %d | %d | %s |\n"
-                    % (name, r["placed"], r["Cv"], r["cpu_s"], r["parcels_end"],
-                       r["outside_pipe_reports"], r["max_near"], r["max_subcycles"],
-                       "-" if r["largest_pair_overlap_of_d"] is None
-                       else "%.4f" % r["largest_pair_overlap_of_d"]))
+              "scenes": rows}
+    with open(os.path.join(args.results, "oreCloud.json"), "w") as out:
+        json.dump(result, out, indent=1)
+    with open(os.path.join(args.results, "oreCloud.md"), "w") as out:
+        out.write("# 1,000 shaken ores in riserParcelFoam (benchmarks/oreCloud.py%s)\n\n"
+                  % (" --quick" if args.quick else ""))
+        out.write("Measured %s, %g s simulated, load average %s; CPU seconds of the solver, "
+                  "and their ratio to the same scene without contact, run in the same "
+                  "command.\n\n" % (result["date"], end, " ".join(result["load"])))
+        out.write("| scene | contact | ores placed (C_v) | CPU s | ratio to no contact | "
+                  "ores at the end | outside-pipe reports | most near a contact | "
+                  "most tracked sub-cycles | most clustered (contact sub-steps) | "
+                  "largest pair overlap / d |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|\n")
+        for scene, variants in rows.items():
+            for name, r in variants.items():
+                out.write("| %s | %s | %s (%s) | %.1f | %.2f | %s | %d | %d | %d | %d (%d) | %s |\n"
+                          % (scene.replace("_", ", ").replace("A", "A = ").replace("f", "f = "),
+                             name, r["placed"], r["Cv"], r["cpu_s"], r["ratio_to_none"],
+                             r["parcels_end"], r["outside_pipe_reports"], r["max_near"],
+                             r["max_subcycles"], r["max_clustered"], r["max_contact_substeps"],
+                             "-" if r["largest_pair_overlap_of_d"] is None
+                             else "%.4f" % r["largest_pair_overlap_of_d"]))
 
 
 if __name__ == "__main__":

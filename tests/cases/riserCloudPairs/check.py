@@ -220,5 +220,17 @@ else:
     print("FAILED: the stock cloud ran pairs in parallel, or its error does not name 'pairs'")
     failures += 1
 
+print("two ores released overlapping each other: refused, naming both")
+make("overlapping", RISER, [(0.0, 0.0, 0.02), (0.0099, 0.0, 0.02)], [(0.0, 0.0), (0.0, 0.0)],
+     (0.76, 0.5, 0.5))
+refused = cases.run([RISER, "-case", "overlapping"], "overlapping/log", may_fail=True) is None
+text = open("overlapping/log").read()
+if refused and re.search(r"particles \d+ \(processor 0\) at .* and \d+ \(processor 0\)", text) \
+        and "overlapping each other: overlap 0.0001" in text:
+    print("  refused: " + next(l.strip() for l in text.splitlines() if "overlapping each" in l))
+else:
+    print("FAILED: overlapping ores at release were not refused with both named")
+    failures += 1
+
 print("%d check(s) failed" % failures)
 sys.exit(1 if failures else 0)

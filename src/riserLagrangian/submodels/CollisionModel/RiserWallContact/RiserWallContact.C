@@ -384,6 +384,7 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     // processor finds the same), by key order
     List<vector> ownX(nOwn), ownU(nOwn);
     List<scalar> ownD(nOwn), ownM(nOwn);
+    labelList ownNew(nOwn);
     {
         label i = 0;
         for (const parcelType& p : this->owner())
@@ -392,6 +393,9 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
             ownU[i] = p.U();
             ownD[i] = p.d();
             ownM[i] = effectiveMass(p);
+            // injected in this step (a parcel that moved between
+            // processors is older)
+            ownNew[i] = p.age() == 0;
             ++i;
         }
     }
@@ -400,6 +404,7 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     const List<vector> allX = gatheredFromAll(ownX), allU = gatheredFromAll(ownU);
     const List<scalar> allD = gatheredFromAll(ownD), allM = gatheredFromAll(ownM);
     const labelList allNeed = gatheredFromAll(ownNeed);
+    const labelList allNew = gatheredFromAll(ownNew);
     const std::size_t n = order.size();
 
     std::vector<riser::Vector> x(n);
@@ -439,6 +444,18 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         if (gap > reach)
         {
             return;
+        }
+        if (gap <= 0 && (allNew[p] || allNew[q]))
+        {
+            FatalErrorInFunction
+                << "particles " << allKeys[p].second() << " (processor "
+                << allKeys[p].first() << ") at " << allX[p] << " and "
+                << allKeys[q].second() << " (processor " << allKeys[q].first()
+                << ") at " << allX[q] << ", of diameters " << allD[p]
+                << " and " << allD[q] << ", are released touching or"
+                << " overlapping each other: overlap " << -gap << " >= 0;"
+                << " release them at least (d_p + d_q)/2 apart"
+                << exit(FatalError);
         }
         // the largest impact speed the pair can reach in the step
         const scalar speed = max(mag(allU[p]) + mag(allU[q]), 2*uMax);
