@@ -3,6 +3,7 @@
 #include "output/transportStatistics.hpp"
 
 #include <gtest/gtest.h>
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -61,6 +62,29 @@ TEST(TransportStatistics, OneValueForEachColumn)
     ASSERT_EQ(values.size(), transportStatisticsColumns().size());
     EXPECT_EQ(values.front(), 0.5);
     EXPECT_EQ(values.back(), 0.25);
+
+    // the contact columns in their places, each value under its name
+    row.impactSpeedMax = 1;
+    row.wallEnergy = 2;
+    row.pairContacts = 3;
+    row.pairContactRate = 4;
+    row.pairImpacts = 5;
+    row.pairImpactSpeedMean = 6;
+    row.pairImpactSpeedMax = 7;
+    row.pairEnergy = 8;
+    row.blockedBins = 9;
+    const std::vector<std::string> names = transportStatisticsColumns();
+    const std::vector<double> filled = transportStatisticsValues(row);
+    const std::vector<std::string> order{"impactSpeedMax", "wallEnergy", "pairContacts",
+        "pairContactRate", "pairImpacts", "pairImpactSpeedMean", "pairImpactSpeedMax",
+        "pairEnergy", "blockedBins"};
+    const auto first = std::find(names.begin(), names.end(), "impactSpeedMax") - names.begin();
+    for (std::size_t k = 0; k < order.size(); ++k)
+    {
+        ASSERT_LT(first + k, names.size());
+        EXPECT_EQ(names[first + k], order[k]);
+        EXPECT_EQ(filled[first + k], double(k + 1)) << order[k];
+    }
 
     std::ostringstream os;
     os << statisticsHeader("title", profileColumns("Cv_r", 3));

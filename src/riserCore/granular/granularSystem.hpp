@@ -29,6 +29,45 @@
 // caller holding contacts of its own (particles of a CFD cloud) can hand
 // them over and take them back.
 //
+// Energy dissipated in contacts, measured as the work of each contact's
+// force on the contact's relative motion. Over a step h, with F_0 and F_1
+// the contact's force on grain i at the evaluations that begin and end the
+// step, and U the velocity of i's contact point relative to j's (or to the
+// wall) with the step's velocities v(t + h/2) and omega(t + h/2),
+//   dE = -h/2 (F_0 . U(n_0, w_0) + F_1 . U(n_1, w_1)),
+// the trapezoid in the force, each force taken with the normal n (and wall
+// velocity w) of its own evaluation. Then the dE of a grain's contacts add
+// up to exactly the work that the two half kicks of its force and torque
+// do on v(t + h/2) and omega(t + h/2). Velocity Verlet changes the kinetic
+// energy of a grain over a step by that work plus m h^2/8 (|a_1|^2 -
+// |a_0|^2) (and the like for the spin), a difference that telescopes: with
+// static walls and no other acceleration, the kinetic energy lost since a
+// state without contact forces is the sum of dE less h^2/8 sum (|F|^2/m +
+// |T|^2/I) of the forces now, so over an impact (no contact force at
+// either end) it equals the sum of dE to round-off. The difference from
+// the continuous contact is then that of the discrete trajectory, first
+// order in h here: a contact starts and ends inside a step, where the
+// damping force (~ delta^(1/4)) is not smooth. Over a contact's life the
+// elastic energy comes back, so a completed contact's sum is what its
+// damping and friction took (and the tangential spring's energy left when
+// it ends). The sums are kept per
+// grain as they grow, step by step (a contact in progress holds its
+// elastic energy in them): wallEnergy (all of a wall contact's dE), and
+// pairEnergy (half of a pair contact's dE to each grain); with the pair
+// contacts each grain completed and the normal speed of approach at the
+// start of its last one, U . n with n from i towards j at the first
+// evaluation that finds the overlap.
+//
+// Handing over contacts in progress: the springs, and also each contact's
+// force at the last evaluation of the run handed over (the F_0 of the
+// first step's dE) and a pair's approach speed, when the caller kept them
+// (setPairContact, setWallContact). A force not handed over is derived at
+// the first step from the state handed over (positions, velocities,
+// springs: the velocities are those at the end of the last step, not the
+// half-step ones the last evaluation saw, so the first step's dE then
+// differs by O(h^2) of the contact's force times its speed); an approach
+// speed not handed over is the one found at the first evaluation here.
+//
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_GRANULAR_GRANULARSYSTEM_HPP
 #define RISERCORE_GRANULAR_GRANULARSYSTEM_HPP
@@ -38,7 +77,9 @@
 #include "wall/wall.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 #include <vector>
 
@@ -63,7 +104,29 @@ struct WallContactState
 {
     bool touching;
     double overlap;
-    double normalForce;     //!< |normal force|
+    double normalForce;                     //!< |normal force|
+    Vector force = Vector::Zero();          //!< the wall's force on the grain
+    Vector normal = Vector::Zero();         //!< from the centre towards the wall
+    Vector wallVelocity = Vector::Zero();   //!< the wall's at the contact
+};
+
+//- A pair contact in progress, in grain i's frame (normal from i towards
+//  j): as handed over before the first step, or as read back
+struct PairContactState
+{
+    //- Tangential spring
+    Vector spring = Vector::Zero();
+
+    //- Force on i at the last evaluation
+    Vector force = Vector::Zero();
+
+    //- Handing over: false if the force is not known (it is then derived
+    //  from the state handed over at the first step)
+    bool forceKnown = false;
+
+    //- Normal speed of approach at the contact's start; NaN: not known (the
+    //  one at the first evaluation here is taken)
+    double approachSpeed = std::numeric_limits<double>::quiet_NaN();
 };
 
 class GranularSystem
@@ -85,10 +148,7 @@ public:
     void addWall(const Wall& w)
     {
         walls_.push_back(&w);
-        const std::size_t nw = grains_.size()*walls_.size();
-        wallSpring_.assign(nw, Vector::Zero());
-        wallTouching_.assign(nw, false);
-        wallState_.assign(nw, WallContactState{false, 0.0, 0.0});
+        wallSlots_.assign(grains_.size()*walls_.size(), WallSlot());
         forcesValid_ = false;
     }
 
@@ -100,10 +160,11 @@ public:
                        0.0, Bound::closed, 1e300, Bound::closed);
         // a new grain joins with no contact history; the list is rebuilt
         grains_.push_back(p);
-        const std::size_t nw = grains_.size()*walls_.size();
-        wallSpring_.resize(nw, Vector::Zero());
-        wallTouching_.resize(nw, false);
-        wallState_.resize(nw, WallContactState{false, 0.0, 0.0});
+        wallSlots_.resize(grains_.size()*walls_.size(), WallSlot());
+        wallEnergy_.push_back(0.0);
+        pairEnergy_.push_back(0.0);
+        pairsCompleted_.push_back(0);
+        pairImpactSpeed_.push_back(0.0);
         listValid_ = false;
         forcesValid_ = false;
     }
@@ -128,25 +189,56 @@ public:
 
     //- A pair contact in progress: grains i and j touch, with the
     //  tangential spring s in i's frame (normal from i to j); before the
-    //  first step
+    //  first step (its force and approach speed not known)
     void setPairSpring(std::size_t i, std::size_t j, const Vector& s)
+    {
+        PairContactState c;
+        c.spring = s;
+        setPairContact(i, j, c);
+    }
+
+    //- A pair contact in progress with what the caller kept of it, in i's
+    //  frame; before the first step
+    void setPairContact(std::size_t i, std::size_t j, const PairContactState& c)
     {
         checkIndex(i);
         checkIndex(j);
-        const bool swapped = j < i;
-        preset_[key(swapped ? j : i, swapped ? i : j)] = swapped ? Vector(-s) : s;
+        PairContactState k = c;
+        if (j < i)
+        {
+            std::swap(i, j);
+            k.spring = -k.spring;
+            k.force = -k.force;
+        }
+        preset_[key(i, j)] = k;
         listValid_ = false;
         forcesValid_ = false;
+        handedOver_ = true;
     }
 
     //- A wall contact in progress: grain i touches wall w with spring s
+    //  (its force not known)
     void setWallSpring(std::size_t i, std::size_t w, const Vector& s)
     {
         checkIndex(i);
-        const std::size_t k = i*walls_.size() + w;
-        wallSpring_.at(k) = s;
-        wallTouching_.at(k) = true;
+        WallSlot& slot = wallSlots_.at(i*walls_.size() + w);
+        slot.spring = s;
+        slot.touching = true;
+        slot.state = WallContactState{true, 0.0, 0.0};
+        slot.handedOver = true;
+        slot.forceKnown = false;
         forcesValid_ = false;
+        handedOver_ = true;
+    }
+
+    //- The same, with the wall's force F on the grain at the last
+    //  evaluation of the run handed over
+    void setWallContact(std::size_t i, std::size_t w, const Vector& s, const Vector& F)
+    {
+        setWallSpring(i, w, s);
+        WallSlot& slot = wallSlots_[i*walls_.size() + w];
+        slot.state.force = F;
+        slot.forceKnown = true;
     }
 
     //- The contact forces and torques on the grains at the current state,
@@ -178,16 +270,35 @@ public:
         }
     }
 
+    //- Call f(i, j, c) for each pair in contact, c its state in i's frame
+    //  (the force of the last evaluation, known)
+    template<class PairFunction>
+    void forEachPairContactState(const PairFunction& f) const
+    {
+        for (const Candidate& c : list_)
+        {
+            if (c.touching)
+            {
+                PairContactState s;
+                s.spring = c.spring;
+                s.force = c.force;
+                s.forceKnown = true;
+                s.approachSpeed = c.approachSpeed;
+                f(std::size_t(c.i), std::size_t(c.j), s);
+            }
+        }
+    }
+
     //- The spring of grain i on wall w (zero when not touching)
     const Vector& wallSpring(std::size_t i, std::size_t w) const
     {
-        return wallSpring_.at(i*walls_.size() + w);
+        return wallSlots_.at(i*walls_.size() + w).spring;
     }
 
     //- Grain i's contact with wall w at the last force evaluation
     const WallContactState& wallContact(std::size_t i, std::size_t w) const
     {
-        return wallState_.at(i*walls_.size() + w);
+        return wallSlots_.at(i*walls_.size() + w).state;
     }
 
     //- Contact torque on grain i at the last evaluation
@@ -200,7 +311,15 @@ public:
     void step(double dt)
     {
         requirePositive("riser::GranularSystem::step", "dt", dt);
-        if (!forcesValid_) computeForces(0.0);
+        if (!forcesValid_)
+        {
+            computeForces(0.0);
+        }
+        else if (handedOver_)
+        {
+            completeHandedOver();
+        }
+        handedOver_ = false;
         kick(0.5*dt);
         for (Grain& p : grains_) p.x += dt*p.v;
         t_ += dt;
@@ -215,6 +334,29 @@ public:
     //- Contacts begun since the start (each counted at its first step)
     long pairContactsBegun() const { return pairBegun_; }
     long wallContactsBegun() const { return wallBegun_; }
+
+    //- Energy grain i's wall contacts have dissipated since the start (the
+    //  sum of their dE, see the top of the file) [J]
+    double wallEnergy(std::size_t i) const { return wallEnergy_.at(i); }
+
+    //- Grain i's half of the energy its pair contacts have dissipated
+    //  since the start [J]
+    double pairEnergy(std::size_t i) const { return pairEnergy_.at(i); }
+
+    //- Pair contacts of grain i completed since the start
+    long pairContactsCompleted(std::size_t i) const { return pairsCompleted_.at(i); }
+
+    //- Normal speed of approach at the start of grain i's last completed
+    //  pair contact (0 before the first) [m/s]
+    double pairImpactSpeed(std::size_t i) const { return pairImpactSpeed_.at(i); }
+
+    //- Energy dissipated in all contacts since the start [J]
+    double dissipatedEnergy() const
+    {
+        double e = 0.0;
+        for (std::size_t i = 0; i < grains_.size(); ++i) e += wallEnergy_[i] + pairEnergy_[i];
+        return e;
+    }
 
     //- Verlet list builds since the start
     long listBuilds() const { return builds_; }
@@ -235,17 +377,28 @@ public:
         return p;
     }
 
-    //- Kinetic (with rotation), gravitational and elastic energy of the
-    //  contacts (2/5 k_n delta^(5/2) normal, 1/2 k_t |delta_t|^2 tangential);
-    //  the grains' own accelerations have no potential here
-    double energy() const
+    //- Kinetic energy of the grains (with rotation when on)
+    double kineticEnergy() const
     {
-        double e = elastic_;
+        double e = 0.0;
         for (const Grain& q : grains_)
         {
-            e += 0.5*q.mass*q.v.squaredNorm() - q.mass*g_.dot(q.x);
+            e += 0.5*q.mass*q.v.squaredNorm();
             if (rotation_) e += 0.5*inertia(q)*q.omega.squaredNorm();
         }
+        return e;
+    }
+
+    //- Elastic energy of the contacts now (2/5 k_n delta^(5/2) normal,
+    //  1/2 k_t |delta_t|^2 tangential)
+    double elasticEnergy() const { return elastic_; }
+
+    //- Kinetic (with rotation), gravitational and elastic energy of the
+    //  contacts; the grains' own accelerations have no potential here
+    double energy() const
+    {
+        double e = elastic_ + kineticEnergy();
+        for (const Grain& q : grains_) e -= q.mass*g_.dot(q.x);
         return e;
     }
 
@@ -291,9 +444,9 @@ private:
         wallImpulse_ += h*wallForce_;
     }
 
-    //- A candidate pair of the Verlet list (i < j) and its spring, kept in
-    //  i's frame (normal from i towards j); j is met through its image
-    //  shifted by dz along z (0, or +-L across the ends of a periodic
+    //- A candidate pair of the Verlet list (i < j) and its contact state,
+    //  kept in i's frame (normal from i towards j); j is met through its
+    //  image shifted by dz along z (0, or +-L across the ends of a periodic
     //  section)
     struct Candidate
     {
@@ -301,10 +454,96 @@ private:
         double dz;
         Vector spring;
         bool touching;
+        Vector force;           //!< on i at the last evaluation (0: none)
+        Vector normal;          //!< of the last evaluation
+        double approachSpeed;   //!< at the contact's start (NaN: not known)
+        bool handedOver;        //!< set before the first step, not evaluated
+        bool forceKnown;        //!< (when handedOver)
     };
 
-    //- Rebuild the candidate list, carrying over the springs of the pairs
-    //  in contact (and those set by setPairSpring)
+    //- Grain i's contact with wall w: its spring, and its state at the last
+    //  evaluation
+    struct WallSlot
+    {
+        Vector spring = Vector::Zero();
+        bool touching = false;
+        WallContactState state{false, 0.0, 0.0};
+        bool handedOver = false;    //!< set before the first step
+        bool forceKnown = false;    //!< (when handedOver)
+    };
+
+    //- Velocity of i's contact point relative to j's, for normal n
+    Vector pairVelocity(const Grain& a, const Grain& b, const Vector& n) const
+    {
+        Vector U = a.v - b.v;
+        if (rotation_) U += a.omega.cross(a.radius*n) + b.omega.cross(b.radius*n);
+        return U;
+    }
+
+    //- Velocity of the grain's contact point relative to the wall's w
+    Vector wallContactVelocity(const Grain& p, const Vector& n, const Vector& w) const
+    {
+        Vector U = p.v - w;
+        if (rotation_) U += p.omega.cross(p.radius*n);
+        return U;
+    }
+
+    //- Complete the contacts handed over with the state of the grains now:
+    //  their normals (and walls' velocities), the forces not handed over
+    //  (from the springs as they are) and the approach speeds not known
+    void completeHandedOver()
+    {
+        if (!listValid_) buildList();
+        for (Candidate& c : list_)
+        {
+            if (!c.touching || !c.handedOver) continue;
+            const Grain& a = grains_[c.i];
+            const Grain& b = grains_[c.j];
+            const PairGeometry geo =
+                pairGeometry(a.x, a.radius, b.x + Vector(0.0, 0.0, c.dz), b.radius);
+            const Vector U = pairVelocity(a, b, geo.normal);
+            c.normal = geo.normal;
+            if (std::isnan(c.approachSpeed)) c.approachSpeed = U.dot(geo.normal);
+            if (!c.forceKnown)
+            {
+                const ContactForce f = pairLaw_.force
+                (
+                    pairBody(a.radius, a.mass, b.radius, b.mass), geo.overlap,
+                    geo.normal, U, turned(c.spring, geo.normal)
+                );
+                c.force = f.normal + f.tangential;
+            }
+            c.handedOver = false;
+        }
+        for (std::size_t i = 0; i < grains_.size(); ++i)
+        {
+            const Grain& p = grains_[i];
+            for (std::size_t w = 0; w < walls_.size(); ++w)
+            {
+                WallSlot& slot = wallSlots_[i*walls_.size() + w];
+                if (!slot.touching || !slot.handedOver) continue;
+                const ContactPoint cp = walls_[w]->contactPoint(p.x, p.radius, t_);
+                slot.state.overlap = cp.overlap;
+                slot.state.normal = cp.normal;
+                slot.state.wallVelocity = cp.velocity;
+                if (!slot.forceKnown)
+                {
+                    const ContactForce f = wallLaw_.force
+                    (
+                        ContactBody(p.radius, p.mass), cp.overlap, cp.normal,
+                        wallContactVelocity(p, cp.normal, cp.velocity),
+                        turned(slot.spring, cp.normal)
+                    );
+                    slot.state.force = f.normal + f.tangential;
+                    slot.state.normalForce = f.normal.norm();
+                }
+                slot.handedOver = false;
+            }
+        }
+    }
+
+    //- Rebuild the candidate list, carrying over the state of the pairs
+    //  in contact (and of those set by setPairContact)
     void buildList()
     {
         const std::size_t n = grains_.size();
@@ -317,11 +556,18 @@ private:
         }
         skinLength_ = skin_*rMax;
         const double cutoff = 2.0*rMax + skinLength_;
-        std::unordered_map<std::uint64_t, Vector> kept(preset_.begin(), preset_.end());
+        // the contacts in progress (those handed over not yet evaluated)
+        std::unordered_map<std::uint64_t, Candidate> kept;
+        for (const auto& p : preset_)
+        {
+            const PairContactState& s = p.second;
+            kept.emplace(p.first, Candidate{0, 0, 0.0, s.spring, true, s.force,
+                Vector::Zero(), s.approachSpeed, true, s.forceKnown});
+        }
         preset_.clear();
         for (const Candidate& c : list_)
         {
-            if (c.touching) kept.emplace(key(c.i, c.j), c.spring);
+            if (c.touching) kept.emplace(key(c.i, c.j), c);
         }
         list_.clear();
 
@@ -367,8 +613,20 @@ private:
             const double reach = grains_[i].radius + grains_[j].radius + skinLength_;
             if ((all_[b] - all_[a]).squaredNorm() > reach*reach) return;
             const auto k = kept.find(key(i, j));
-            list_.push_back(Candidate{std::uint32_t(i), std::uint32_t(j), dz,
-                k == kept.end() ? Vector(Vector::Zero()) : k->second, k != kept.end()});
+            if (k == kept.end())
+            {
+                list_.push_back(Candidate{std::uint32_t(i), std::uint32_t(j), dz,
+                    Vector::Zero(), false, Vector::Zero(), Vector::Zero(),
+                    std::numeric_limits<double>::quiet_NaN(), false, false});
+            }
+            else
+            {
+                Candidate c = k->second;
+                c.i = std::uint32_t(i);
+                c.j = std::uint32_t(j);
+                c.dz = dz;
+                list_.push_back(c);
+            }
         });
         listValid_ = true;
         ++builds_;
@@ -386,7 +644,7 @@ private:
     }
 
     //- Forces at the current positions; dt: the step that led here (the
-    //  springs grow by U_t dt)
+    //  springs grow by U_t dt; the contacts' dissipation over it is added)
     void computeForces(double dt)
     {
         const std::size_t n = grains_.size();
@@ -406,16 +664,39 @@ private:
             const Grain& b = grains_[cand.j];
             const PairGeometry geo =
                 pairGeometry(a.x, a.radius, b.x + Vector(0.0, 0.0, cand.dz), b.radius);
+            // the first half of the step's trapezoid (0 for a new contact)
+            const double workBefore =
+                cand.touching ? cand.force.dot(pairVelocity(a, b, cand.normal)) : 0.0;
             if (geo.overlap <= 0.0)
             {
+                if (cand.touching)
+                {
+                    // the contact ended within the step (one handed over
+                    // that was found apart at once: its speed now)
+                    tallyPair(cand, -0.5*dt*workBefore);
+                    const double speed =
+                        std::isnan(cand.approachSpeed)
+                      ? pairVelocity(a, b, geo.normal).dot(geo.normal)
+                      : cand.approachSpeed;
+                    ++pairsCompleted_[cand.i];
+                    ++pairsCompleted_[cand.j];
+                    pairImpactSpeed_[cand.i] = speed;
+                    pairImpactSpeed_[cand.j] = speed;
+                }
                 cand.touching = false;
                 cand.spring.setZero();
+                cand.force.setZero();
+                cand.approachSpeed = std::numeric_limits<double>::quiet_NaN();
                 continue;
             }
-            if (!cand.touching) ++pairBegun_;
             const Vector U = rotation_
               ? pairContactVelocity(geo, a.v, a.omega, a.radius, b.v, b.omega, b.radius)
               : Vector(a.v - b.v);
+            if (!cand.touching) ++pairBegun_;
+            if (!cand.touching || std::isnan(cand.approachSpeed))
+            {
+                cand.approachSpeed = U.dot(geo.normal);
+            }
             const Vector Ut = U - U.dot(geo.normal)*geo.normal;
             const Vector spring = turned(cand.spring, geo.normal) + dt*Ut;
             const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
@@ -428,8 +709,12 @@ private:
                 torque_[cand.i] += (a.radius*geo.normal).cross(c.tangential);
                 torque_[cand.j] += (b.radius*geo.normal).cross(c.tangential);
             }
+            tallyPair(cand, -0.5*dt*(workBefore + F.dot(U)));
             cand.spring = c.springAfter;
             cand.touching = true;
+            cand.force = F;
+            cand.normal = geo.normal;
+            cand.handedOver = false;
             ++pairsTouching_;
             elastic_ += energyOf(body, geo.overlap, c.springAfter, pairLaw_);
             largestPairOverlap_ = std::max
@@ -443,34 +728,55 @@ private:
             const Grain& p = grains_[i];
             for (std::size_t w = 0; w < walls_.size(); ++w)
             {
-                const std::size_t k = i*walls_.size() + w;
+                WallSlot& slot = wallSlots_[i*walls_.size() + w];
                 const ContactPoint cp = walls_[w]->contactPoint(p.x, p.radius, t_);
+                const double workBefore =
+                    slot.touching
+                  ? slot.state.force.dot
+                    (
+                        wallContactVelocity(p, slot.state.normal, slot.state.wallVelocity)
+                    )
+                  : 0.0;
                 if (cp.overlap <= 0.0)
                 {
-                    wallTouching_[k] = false;
-                    wallSpring_[k].setZero();
-                    wallState_[k] = WallContactState{false, cp.overlap, 0.0};
+                    // (a contact that ended within the step: its last part)
+                    wallEnergy_[i] -= 0.5*dt*workBefore;
+                    slot.touching = false;
+                    slot.spring.setZero();
+                    slot.state = WallContactState{false, cp.overlap, 0.0};
+                    slot.handedOver = false;
                     continue;
                 }
-                if (!wallTouching_[k]) ++wallBegun_;
-                Vector U = p.v - cp.velocity;
-                if (rotation_) U += p.omega.cross(p.radius*cp.normal);
+                if (!slot.touching) ++wallBegun_;
+                const Vector U = wallContactVelocity(p, cp.normal, cp.velocity);
                 const Vector Ut = U - U.dot(cp.normal)*cp.normal;
-                const Vector spring = turned(wallSpring_[k], cp.normal) + dt*Ut;
+                const Vector spring = turned(slot.spring, cp.normal) + dt*Ut;
                 const ContactBody body(p.radius, p.mass);
                 const ContactForce c = wallLaw_.force(body, cp.overlap, cp.normal, U, spring);
                 const Vector F = c.normal + c.tangential;
                 force_[i] += F;
                 wallForce_ += F;
                 if (rotation_) torque_[i] += (p.radius*cp.normal).cross(c.tangential);
-                wallSpring_[k] = c.springAfter;
-                wallTouching_[k] = true;
-                wallState_[k] = WallContactState{true, cp.overlap, c.normal.norm()};
+                wallEnergy_[i] -= 0.5*dt*(workBefore + F.dot(U));
+                slot.spring = c.springAfter;
+                slot.touching = true;
+                slot.state = WallContactState
+                {
+                    true, cp.overlap, c.normal.norm(), F, cp.normal, cp.velocity
+                };
+                slot.handedOver = false;
                 ++wallsTouching_;
                 elastic_ += energyOf(body, cp.overlap, c.springAfter, wallLaw_);
             }
         }
         forcesValid_ = true;
+    }
+
+    //- Half of a pair contact's dissipation to each of its grains
+    void tallyPair(const Candidate& c, double dE)
+    {
+        pairEnergy_[c.i] += 0.5*dE;
+        pairEnergy_[c.j] += 0.5*dE;
     }
 
     static void require32bit(std::size_t n)
@@ -500,21 +806,26 @@ private:
     std::vector<std::size_t> original_; //!< the grain of each of all_
     std::vector<double> shift_;         //!< the image's z shift
     std::vector<Candidate> list_;
-    std::unordered_map<std::uint64_t, Vector> preset_;  //!< setPairSpring's
+    //- setPairContact's, in the frame of the lower index
+    std::unordered_map<std::uint64_t, PairContactState> preset_;
     double z0_ = 0.0, length_ = 0.0;    //!< periodic section (length 0: none)
-    std::vector<Vector> wallSpring_;    //!< per grain and wall
-    std::vector<bool> wallTouching_;
-    std::vector<WallContactState> wallState_;
+    std::vector<WallSlot> wallSlots_;   //!< per grain and wall
     std::size_t pairsTouching_ = 0, wallsTouching_ = 0;
     CellList cells_;
     Vector wallForce_ = Vector::Zero();
     Vector wallImpulse_ = Vector::Zero();
+    //- Per grain: energy dissipated in wall and pair contacts, pair
+    //  contacts completed, approach speed of the last
+    std::vector<double> wallEnergy_, pairEnergy_;
+    std::vector<long> pairsCompleted_;
+    std::vector<double> pairImpactSpeed_;
     double elastic_ = 0.0;
     double largestPairOverlap_ = 0.0;
     double t_ = 0.0;
     long pairBegun_ = 0, wallBegun_ = 0, builds_ = 0;
     bool listValid_ = false;
     bool forcesValid_ = false;
+    bool handedOver_ = false;           //!< contacts set, not yet completed
 };
 
 } // namespace riser

@@ -4,8 +4,8 @@
 // One row per sample, white-space separated, SI units, after comment lines
 // of which the last names the columns.
 //
-// transport.dat, the cloud's state at the sample time and its wall contacts
-// since the previous sample:
+// transport.dat, the cloud's state at the sample time and its wall and pair
+// (particle-particle) contacts since the previous sample:
 //   t                       time
 //   parcels particles       parcels in the section, particles they stand for
 //   Cv                      in-situ solids volume fraction,
@@ -22,6 +22,19 @@
 //   impacts                 of these, the ones whose impact speed is known
 //   impactSpeedMean impactSpeedMax   their normal impact speed UnIn [m/s]
 //                           (nan without impacts)
+//   wallEnergy              energy dissipated in wall contacts since the
+//                           previous sample, sum n_p dE_p [J]
+//   pairContacts            pair contacts completed since the previous
+//                           sample, each contact once (half the sum of the
+//                           parcels' completed pair contacts)
+//   pairContactRate         2 pairContacts / (t - t_previous) / parcels
+//                           [1/s]: pair contacts per parcel and second
+//   pairImpacts             the parcels' pair contacts whose approach speed
+//                           is known (a contact is met by both its parcels)
+//   pairImpactSpeedMean pairImpactSpeedMax   their normal speed of approach
+//                           at the contact's start [m/s] (nan without)
+//   pairEnergy              energy dissipated in pair contacts since the
+//                           previous sample, sum n_p dE_p [J]
 //   blockedBins             axial bins whose Cv exceeds blockageFraction
 //   blockedTime             time so far with some axial bin above it [s]
 //
@@ -32,6 +45,8 @@
 // slices of equal length, the lowest first.
 // impactSpeeds.dat: t and n_0 .. n_<k-1>, the impacts since the previous
 // sample whose speed lies in [i w, (i+1) w) (the last bin: all faster).
+// pairImpactSpeeds.dat: the same for the pair impacts (pairImpacts), by
+// their approach speed, in the same bins.
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_OUTPUT_TRANSPORTSTATISTICS_HPP
@@ -57,6 +72,10 @@ struct TransportStatisticsRow
     double massFlux = 0.0;
     double contacts = 0.0, contactRate = 0.0;
     double impacts = 0.0, impactSpeedMean = 0.0, impactSpeedMax = 0.0;
+    double wallEnergy = 0.0;
+    double pairContacts = 0.0, pairContactRate = 0.0;
+    double pairImpacts = 0.0, pairImpactSpeedMean = 0.0, pairImpactSpeedMax = 0.0;
+    double pairEnergy = 0.0;
     double blockedBins = 0.0, blockedTime = 0.0;
 };
 
@@ -67,7 +86,9 @@ inline std::vector<std::string> transportStatisticsColumns()
     {
         "t", "parcels", "particles", "Cv", "Urx", "Ury", "Urz", "slipx", "slipy", "slipz",
         "liftingEfficiency", "massFlux", "contacts", "contactRate", "impacts",
-        "impactSpeedMean", "impactSpeedMax", "blockedBins", "blockedTime"
+        "impactSpeedMean", "impactSpeedMax", "wallEnergy", "pairContacts",
+        "pairContactRate", "pairImpacts", "pairImpactSpeedMean", "pairImpactSpeedMax",
+        "pairEnergy", "blockedBins", "blockedTime"
     };
 }
 
@@ -79,6 +100,8 @@ inline std::vector<double> transportStatisticsValues(const TransportStatisticsRo
         r.t, r.parcels, r.particles, r.Cv, r.URel.x(), r.URel.y(), r.URel.z(),
         r.slip.x(), r.slip.y(), r.slip.z(), r.liftingEfficiency, r.massFlux,
         r.contacts, r.contactRate, r.impacts, r.impactSpeedMean, r.impactSpeedMax,
+        r.wallEnergy, r.pairContacts, r.pairContactRate, r.pairImpacts,
+        r.pairImpactSpeedMean, r.pairImpactSpeedMax, r.pairEnergy,
         r.blockedBins, r.blockedTime
     };
 }

@@ -143,6 +143,42 @@ if not forgotten > 1e-4:
     failures += 1
 else:
     print("  the springs forgotten at the restart: %.2e (> 1e-4: the check sees them)" % forgotten)
+
+
+def trace(case, name):
+    """a field of the contact trace at the end, ordered by origId"""
+    folder = os.path.join(case, "%g" % end, "lagrangian", "kinematicCloud")
+    ids = foamfields.read_scalars(os.path.join(folder, "origId"))
+    return [v for _, v in sorted(zip(ids, foamfields.read_scalars(os.path.join(folder, name))))]
+
+
+# the contact trace across the restart: the contact in progress is completed
+# once; its approach speed, kept in the model from one flow step to the next
+# but not stored, is the one found at the restart's first sub-step; and the
+# forces of its last evaluation are derived from the state read, which
+# changes the first sub-step's dissipation by O(h^2) (velocities at the end
+# of the step instead of the half-step ones: the damping forces differ by
+# eta h/2 a): 1e-4 of the contact's dissipation is allowed
+energy = sum(trace("whole", "pairEnergy"))
+check("  pairEnergy restarted mid-contact against uninterrupted [J]",
+      sum(trace("split", "pairEnergy")), energy, 1e-4)
+if trace("whole", "pairContacts") != [1, 1] or trace("split", "pairContacts") != [1, 1]:
+    print("FAILED: pairContacts %s (whole), %s (split): one each expected"
+          % (trace("whole", "pairContacts"), trace("split", "pairContacts")))
+    failures += 1
+# the approach speed: the normal relative speed when the straight paths
+# bring the centres to d = 10 mm apart: relative position (0.024 - t, 0,
+# 0.00445 - 0.1 t) m, relative velocity (1, 0, 0.1) m/s; the engine takes it
+# at its first sub-step with an overlap, within a sub-step's turn of the
+# normal (~ U h/d, 1e-4 here)
+a, b = 1.01, -2 * (0.024 + 0.1 * 0.00445)
+c = 0.024 ** 2 + 0.00445 ** 2 - 1e-4
+t = (-b - math.sqrt(b * b - 4 * a * c)) / (2 * a)
+approach = ((0.024 - t) + 0.1 * (0.00445 - 0.1 * t)) / 0.01
+for i, speed in enumerate(trace("whole", "pairImpactSpeed")):
+    check("  pairImpactSpeed of particle %d, uninterrupted [m/s]" % i, speed, approach, 1e-4)
+print("  pairImpactSpeed after the restart mid-contact: %s m/s (the speed at the restart)"
+      % trace("split", "pairImpactSpeed"))
 # the stock cloud moves each sub-cycle through the mesh with the same law;
 # its cycle (velocity half step, move, collide, velocity half step) is
 # velocity Verlet too, so with no fluid forces the two integrate the same

@@ -5,17 +5,21 @@ column name (riserfoam.tables).
 usage: plotTransportStatistics.py <riserTransportStatistics folder> <out.png> [title]
 
 The folder is postProcessing/lagrangian/<cloud>/riserTransportStatistics of
-a case, holding transport.dat, radialProfile.dat, axialProfile.dat and
-impactSpeeds.dat. Writes one figure of six panels:
+a case, holding transport.dat, radialProfile.dat, axialProfile.dat,
+impactSpeeds.dat and pairImpactSpeeds.dat. Writes one figure of eight
+panels:
   - the radial profile of the solids volume fraction C_v against r/R (each
     annulus of equal area at its area-mean radius), averaged over the
     samples, and that of the last sample;
   - the axial profile, averaged over the samples and at the last one;
   - the overall C_v and the number of blocked slices over time;
   - the lifting efficiency (mean relative v_z / u_cm) over time;
-  - the wall contact rate per parcel over time;
-  - the histogram of the impact speeds of the whole run (the sum of the
-    rows of impactSpeeds.dat).
+  - the wall and pair contact rates per parcel over time;
+  - the energy dissipated in wall and in pair contacts, summed over the
+    intervals from the table's start, over time;
+  - the histograms of the wall impact speeds and of the pair approach
+    speeds of the whole run (the sums of the rows of impactSpeeds.dat and
+    pairImpactSpeeds.dat), side by side.
 """
 import os
 import re
@@ -50,9 +54,11 @@ def main():
     axial = bins(tables.read(os.path.join(folder, "axialProfile.dat")), "Cv_z")
     impacts_path = os.path.join(folder, "impactSpeeds.dat")
     impacts = bins(tables.read(impacts_path), "n_").sum(axis=0)
+    pair_impacts = bins(tables.read(os.path.join(folder, "pairImpactSpeeds.dat")),
+                        "n_").sum(axis=0)
     t = transport["t"]
 
-    fig, ax = plt.subplots(3, 2, figsize=(11, 11))
+    fig, ax = plt.subplots(4, 2, figsize=(11, 14))
     n = radial.shape[1]
     # annulus k: (r/R)^2 in [k/n, (k+1)/n]; its area-mean radius
     r = np.sqrt((np.arange(n) + 0.5) / n)
@@ -78,21 +84,35 @@ def main():
     ax[1, 1].plot(t, transport["liftingEfficiency"])
     ax[1, 1].set(xlabel="t [s]", ylabel="mean v_z / u_cm", title="lifting efficiency")
 
-    ax[2, 0].step(t, transport["contactRate"], where="pre")
-    ax[2, 0].set(xlabel="t [s]", ylabel="contacts / s / parcel",
-                 title="wall contact rate (%d contacts)" % int(np.sum(transport["contacts"])))
+    ax[2, 0].step(t, transport["contactRate"], where="pre",
+                  label="wall (%d contacts)" % int(np.sum(transport["contacts"])))
+    ax[2, 0].step(t, transport["pairContactRate"], where="pre",
+                  label="pair (%g contacts)" % np.sum(transport["pairContacts"]))
+    ax[2, 0].set(xlabel="t [s]", ylabel="contacts / s / parcel", title="contact rates")
+    ax[2, 0].legend()
+
+    # the energy dissipated from the start of the table on (the sum of the
+    # intervals' energies)
+    ax[2, 1].plot(t, np.cumsum(transport["wallEnergy"]), label="wall")
+    ax[2, 1].plot(t, np.cumsum(transport["pairEnergy"]), label="pair")
+    ax[2, 1].set(xlabel="t [s]", ylabel="J", title="energy dissipated in contacts, cumulative")
+    ax[2, 1].legend()
 
     width = bin_width(impacts_path)
-    edges = width * np.arange(len(impacts))
-    ax[2, 1].bar(edges, impacts, width=width, align="edge")
-    ax[2, 1].set(xlabel="impact speed UnIn [m/s] (last bin: all faster)",
-                 ylabel="impacts", title="impact speeds, whole run")
+    panels = ((impacts, "impact speed UnIn", "wall impacts, whole run"),
+              (pair_impacts, "approach speed", "pair impacts (each parcel's), whole run"))
+    for k, (counts, speed, what) in enumerate(panels):
+        edges = width * np.arange(len(counts))
+        ax[3, k].bar(edges, counts, width=width, align="edge")
+        ax[3, k].set(xlabel="%s [m/s] (last bin: all faster)" % speed, ylabel="impacts",
+                     title=what)
 
     fig.suptitle(title)
     fig.tight_layout()
     fig.savefig(out, dpi=110)
-    print("plotTransportStatistics: %d samples, %d contacts -> %s"
-          % (len(t), int(np.sum(transport["contacts"])), out))
+    print("plotTransportStatistics: %d samples, %d wall and %g pair contacts -> %s"
+          % (len(t), int(np.sum(transport["contacts"])), np.sum(transport["pairContacts"]),
+             out))
 
 
 if __name__ == "__main__":

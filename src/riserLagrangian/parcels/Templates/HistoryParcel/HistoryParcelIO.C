@@ -39,8 +39,10 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
         vector slip0;
         List<vector> window, tail;
         is >> steps >> slip0 >> window >> tail >> UNode_ >> historyKnown_
-            >> wallContacts_.count >> wallContacts_.overlapMax
-            >> wallContacts_.impactSpeed;
+            >> contacts_.wallContacts >> contacts_.wallOverlapMax
+            >> contacts_.wallImpactSpeed >> contacts_.wallEnergy
+            >> contacts_.pairContacts >> contacts_.pairImpactSpeed
+            >> contacts_.pairEnergy;
         setHistory(steps, slip0, window, tail);
     }
 
@@ -93,7 +95,8 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 
     ParcelType::readFields(c);
 
-    // the wall-contact trace: zero for a cloud written without it
+    // the contact trace: zero for a cloud written without it (the wall
+    // counts, and the energies with the pair contacts, which came later)
     IOobject contactsIO(c.fieldIOobject("wallContacts", IOobject::MUST_READ));
     if (contactsIO.typeHeaderOk<IOField<label>>(true))
     {
@@ -115,9 +118,9 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
         label i = 0;
         for (HistoryParcel<ParcelType>& p : c)
         {
-            p.wallContacts_.count = contacts[i];
-            p.wallContacts_.overlapMax = overlapMax[i];
-            p.wallContacts_.impactSpeed = impactSpeed[i];
+            p.contacts_.wallContacts = contacts[i];
+            p.contacts_.wallOverlapMax = overlapMax[i];
+            p.contacts_.wallImpactSpeed = impactSpeed[i];
             ++i;
         }
     }
@@ -125,6 +128,48 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
     {
         Info<< "    " << c.name() << ": no wall-contact trace written at "
             << c.time().timeName() << "; the counts start there" << endl;
+    }
+
+    IOobject energyIO(c.fieldIOobject("wallEnergy", IOobject::MUST_READ));
+    if (energyIO.typeHeaderOk<IOField<scalar>>(true))
+    {
+        IOField<scalar> wallEnergy(energyIO, valid);
+        c.checkFieldIOobject(c, wallEnergy);
+        IOField<label> pairContacts
+        (
+            c.fieldIOobject("pairContacts", IOobject::MUST_READ),
+            valid
+        );
+        c.checkFieldIOobject(c, pairContacts);
+        IOField<scalar> pairImpactSpeed
+        (
+            c.fieldIOobject("pairImpactSpeed", IOobject::MUST_READ),
+            valid
+        );
+        c.checkFieldIOobject(c, pairImpactSpeed);
+        IOField<scalar> pairEnergy
+        (
+            c.fieldIOobject("pairEnergy", IOobject::MUST_READ),
+            valid
+        );
+        c.checkFieldIOobject(c, pairEnergy);
+
+        label i = 0;
+        for (HistoryParcel<ParcelType>& p : c)
+        {
+            p.contacts_.wallEnergy = wallEnergy[i];
+            p.contacts_.pairContacts = pairContacts[i];
+            p.contacts_.pairImpactSpeed = pairImpactSpeed[i];
+            p.contacts_.pairEnergy = pairEnergy[i];
+            ++i;
+        }
+    }
+    else if (valid)
+    {
+        Info<< "    " << c.name() << ": no contact energies or pair-contact"
+            << " trace (wallEnergy, pairContacts, pairImpactSpeed,"
+            << " pairEnergy) written at " << c.time().timeName()
+            << "; they start at zero there" << endl;
     }
 
     // clouds written without histories (another solver, or initial
@@ -174,9 +219,13 @@ void Foam::HistoryParcel<ParcelType>::collectFields
     const CloudType& c,
     labelField& steps,
     vectorField& slip0,
-    labelField& contacts,
-    scalarField& overlapMax,
-    scalarField& impactSpeed
+    labelField& wallContacts,
+    scalarField& wallOverlapMax,
+    scalarField& wallImpactSpeed,
+    scalarField& wallEnergy,
+    labelField& pairContacts,
+    scalarField& pairImpactSpeed,
+    scalarField& pairEnergy
 )
 {
     label i = 0;
@@ -184,9 +233,14 @@ void Foam::HistoryParcel<ParcelType>::collectFields
     {
         steps[i] = p.history_.steps;
         slip0[i] = p.history_.slip0;
-        contacts[i] = p.wallContacts_.count;
-        overlapMax[i] = p.wallContacts_.overlapMax;
-        impactSpeed[i] = p.wallContacts_.impactSpeed;
+        const contactTrace& trace = p.contacts_;
+        wallContacts[i] = trace.wallContacts;
+        wallOverlapMax[i] = trace.wallOverlapMax;
+        wallImpactSpeed[i] = trace.wallImpactSpeed;
+        wallEnergy[i] = trace.wallEnergy;
+        pairContacts[i] = trace.pairContacts;
+        pairImpactSpeed[i] = trace.pairImpactSpeed;
+        pairEnergy[i] = trace.pairEnergy;
         ++i;
     }
 }
@@ -214,7 +268,31 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
         c.fieldIOobject("wallImpactSpeed", IOobject::NO_READ),
         np
     );
-    collectFields(c, steps, slip0, contacts, overlapMax, impactSpeed);
+    IOField<scalar> wallEnergy
+    (
+        c.fieldIOobject("wallEnergy", IOobject::NO_READ),
+        np
+    );
+    IOField<label> pairContacts
+    (
+        c.fieldIOobject("pairContacts", IOobject::NO_READ),
+        np
+    );
+    IOField<scalar> pairImpactSpeed
+    (
+        c.fieldIOobject("pairImpactSpeed", IOobject::NO_READ),
+        np
+    );
+    IOField<scalar> pairEnergy
+    (
+        c.fieldIOobject("pairEnergy", IOobject::NO_READ),
+        np
+    );
+    collectFields
+    (
+        c, steps, slip0, contacts, overlapMax, impactSpeed, wallEnergy,
+        pairContacts, pairImpactSpeed, pairEnergy
+    );
 
     vectorFieldCompactIOField window
     (
@@ -242,6 +320,10 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     contacts.write(valid);
     overlapMax.write(valid);
     impactSpeed.write(valid);
+    wallEnergy.write(valid);
+    pairContacts.write(valid);
+    pairImpactSpeed.write(valid);
+    pairEnergy.write(valid);
 }
 
 
@@ -263,7 +345,11 @@ void Foam::HistoryParcel<ParcelType>::writeObjects
         cloud::createIOField<vector>("historySlip0", np, obr),
         cloud::createIOField<label>("wallContacts", np, obr),
         cloud::createIOField<scalar>("wallOverlapMax", np, obr),
-        cloud::createIOField<scalar>("wallImpactSpeed", np, obr)
+        cloud::createIOField<scalar>("wallImpactSpeed", np, obr),
+        cloud::createIOField<scalar>("wallEnergy", np, obr),
+        cloud::createIOField<label>("pairContacts", np, obr),
+        cloud::createIOField<scalar>("pairImpactSpeed", np, obr),
+        cloud::createIOField<scalar>("pairEnergy", np, obr)
     );
 }
 
@@ -289,16 +375,34 @@ void Foam::HistoryParcel<ParcelType>::writeProperties
     );
     ParcelType::writeProperty
     (
-        os, "wallContacts", wallContacts_.count, namesOnly, delim, filters
+        os, "wallContacts", contacts_.wallContacts, namesOnly, delim, filters
     );
     ParcelType::writeProperty
     (
-        os, "wallOverlapMax", wallContacts_.overlapMax, namesOnly, delim, filters
-    );
-    ParcelType::writeProperty
-    (
-        os, "wallImpactSpeed", wallContacts_.impactSpeed, namesOnly, delim,
+        os, "wallOverlapMax", contacts_.wallOverlapMax, namesOnly, delim,
         filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "wallImpactSpeed", contacts_.wallImpactSpeed, namesOnly, delim,
+        filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "wallEnergy", contacts_.wallEnergy, namesOnly, delim, filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "pairContacts", contacts_.pairContacts, namesOnly, delim, filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "pairImpactSpeed", contacts_.pairImpactSpeed, namesOnly, delim,
+        filters
+    );
+    ParcelType::writeProperty
+    (
+        os, "pairEnergy", contacts_.pairEnergy, namesOnly, delim, filters
     );
 }
 
@@ -319,9 +423,13 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << p.tailList()
         << token::SPACE << p.UNode_
         << token::SPACE << p.historyKnown_
-        << token::SPACE << p.wallContacts_.count
-        << token::SPACE << p.wallContacts_.overlapMax
-        << token::SPACE << p.wallContacts_.impactSpeed;
+        << token::SPACE << p.contacts_.wallContacts
+        << token::SPACE << p.contacts_.wallOverlapMax
+        << token::SPACE << p.contacts_.wallImpactSpeed
+        << token::SPACE << p.contacts_.wallEnergy
+        << token::SPACE << p.contacts_.pairContacts
+        << token::SPACE << p.contacts_.pairImpactSpeed
+        << token::SPACE << p.contacts_.pairEnergy;
 
     os.check(FUNCTION_NAME);
     return os;

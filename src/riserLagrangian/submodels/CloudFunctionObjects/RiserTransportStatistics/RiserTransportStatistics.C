@@ -36,8 +36,9 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
     transportFile_ = open
     (
         "transport",
-        "riserTransportStatistics: the cloud at each sample, its wall contacts"
-        " since the previous one; SI units, velocities relative to the riser",
+        "riserTransportStatistics: the cloud at each sample, its wall and pair"
+        " contacts since the previous one; SI units, velocities relative to"
+        " the riser",
         riser::transportStatisticsColumns()
     );
     radialFile_ = open
@@ -63,6 +64,41 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
         " all faster)",
         riser::profileColumns("n_", impactSpeedBins_)
     );
+    pairImpactFile_ = open
+    (
+        "pairImpactSpeeds",
+        "riserTransportStatistics: pair impacts since the previous sample by"
+        " approach speed, bins of " + width.str() + " m/s from 0 (the last:"
+        " all faster)",
+        riser::profileColumns("n_", impactSpeedBins_)
+    );
+}
+
+
+template<class CloudType>
+typename Foam::RiserTransportStatistics<CloudType>::traceState
+Foam::RiserTransportStatistics<CloudType>::stateOf(const contactTrace& trace)
+{
+    traceState s;
+    s[0] = trace.wallContacts;
+    s[1] = trace.pairContacts;
+    s[2] = trace.wallEnergy;
+    s[3] = trace.pairEnergy;
+    return s;
+}
+
+
+template<class CloudType>
+Foam::label Foam::RiserTransportStatistics<CloudType>::speedBin
+(
+    const scalar speed
+) const
+{
+    return
+        label
+        (
+            min(scalar(impactSpeedBins_ - 1), max(0, speed)/impactSpeedBinWidth_)
+        );
 }
 
 
@@ -74,39 +110,45 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
     for (const auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
-        if (!contactCounts_.found(key))
+        if (!traces_.found(key))
         {
             missing.append(key);
         }
     }
-    claimParticleStates(contactCounts_, missing);
+    claimParticleStates(traces_, missing);
 
-    HashTable<label, labelPair, labelPair::Hash<>> counts(2*cloud.size());
+    // a parcel new to the cloud starts from an empty trace
+    const traceState none(Zero);
+    HashTable<traceState, labelPair, labelPair::Hash<>> states(2*cloud.size());
     for (const auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
-        const wallContactTrace& trace = p.wallContacts();
-        const label added = trace.count - contactCounts_.lookup(key, 0);
-        if (added > 0)
+        const contactTrace& trace = p.contacts();
+        const traceState last = traces_.lookup(key, none);
+        const traceState now = stateOf(trace);
+
+        if (now[0] > last[0])
         {
-            contacts_ += added;
+            contacts_ += now[0] - last[0];
             impacts_ += 1;
-            impactSpeedSum_ += trace.impactSpeed;
-            impactSpeedMax_ = max(impactSpeedMax_, trace.impactSpeed);
-            const label bin =
-                label
-                (
-                    min
-                    (
-                        scalar(impactSpeedBins_ - 1),
-                        max(0, trace.impactSpeed)/impactSpeedBinWidth_
-                    )
-                );
-            impactHistogram_[bin] += 1;
+            impactSpeedSum_ += trace.wallImpactSpeed;
+            impactSpeedMax_ = max(impactSpeedMax_, trace.wallImpactSpeed);
+            impactHistogram_[speedBin(trace.wallImpactSpeed)] += 1;
         }
-        counts.insert(key, trace.count);
+        if (now[1] > last[1])
+        {
+            // each contact is completed by both its parcels
+            pairContacts_ += 0.5*(now[1] - last[1]);
+            pairImpacts_ += 1;
+            pairImpactSpeedSum_ += trace.pairImpactSpeed;
+            pairImpactSpeedMax_ = max(pairImpactSpeedMax_, trace.pairImpactSpeed);
+            pairImpactHistogram_[speedBin(trace.pairImpactSpeed)] += 1;
+        }
+        wallEnergy_ += p.nParticle()*(now[2] - last[2]);
+        pairEnergy_ += p.nParticle()*(now[3] - last[3]);
+        states.insert(key, now);
     }
-    contactCounts_.transfer(counts);
+    traces_.transfer(states);
 }
 
 
@@ -191,6 +233,13 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     reduce(impactSpeedSum_, sumOp<scalar>());
     reduce(impactSpeedMax_, maxOp<scalar>());
     Pstream::listCombineGather(impactHistogram_, plusEqOp<scalar>());
+    reduce(wallEnergy_, sumOp<scalar>());
+    reduce(pairContacts_, sumOp<scalar>());
+    reduce(pairImpacts_, sumOp<scalar>());
+    reduce(pairImpactSpeedSum_, sumOp<scalar>());
+    reduce(pairImpactSpeedMax_, maxOp<scalar>());
+    Pstream::listCombineGather(pairImpactHistogram_, plusEqOp<scalar>());
+    reduce(pairEnergy_, sumOp<scalar>());
 
     if (Pstream::master())
     {
@@ -210,6 +259,17 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         row.impacts = impacts_;
         row.impactSpeedMean = impacts_ > 0 ? impactSpeedSum_/impacts_ : nan;
         row.impactSpeedMax = impacts_ > 0 ? impactSpeedMax_ : nan;
+        row.wallEnergy = wallEnergy_;
+        row.pairContacts = pairContacts_;
+        row.pairContactRate =
+            parcels > 0 && t > lastSample_
+          ? 2*pairContacts_/(t - lastSample_)/parcels
+          : 0;
+        row.pairImpacts = pairImpacts_;
+        row.pairImpactSpeedMean =
+            pairImpacts_ > 0 ? pairImpactSpeedSum_/pairImpacts_ : nan;
+        row.pairImpactSpeedMax = pairImpacts_ > 0 ? pairImpactSpeedMax_ : nan;
+        row.pairEnergy = pairEnergy_;
         row.blockedBins = blockedBins;
         row.blockedTime = blockedTime_;
         riser::writeStatisticsRow
@@ -227,6 +287,7 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         writeProfile(radialFile_(), radialVolume/(area*length_/radialBins_));
         writeProfile(axialFile_(), axialVolume/(area*length_/axialBins_));
         writeProfile(impactFile_(), impactHistogram_);
+        writeProfile(pairImpactFile_(), pairImpactHistogram_);
         transportFile_().flush();
     }
 
@@ -236,6 +297,13 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     impactSpeedSum_ = 0;
     impactSpeedMax_ = 0;
     impactHistogram_ = Zero;
+    wallEnergy_ = 0;
+    pairContacts_ = 0;
+    pairImpacts_ = 0;
+    pairImpactSpeedSum_ = 0;
+    pairImpactSpeedMax_ = 0;
+    pairImpactHistogram_ = Zero;
+    pairEnergy_ = 0;
 }
 
 
@@ -278,7 +346,8 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     z0_(boundBox(owner.mesh().points()).min().z()),
     length_(boundBox(owner.mesh().points()).span().z()),
     lastSample_(owner.time().startTime().value()),
-    impactHistogram_(impactSpeedBins_, Zero)
+    impactHistogram_(impactSpeedBins_, Zero),
+    pairImpactHistogram_(impactSpeedBins_, Zero)
 {
     checkedEntry::allowedKeys
     (
@@ -305,6 +374,18 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
         {
             impactHistogram_ = histogram;
         }
+        this->getModelProperty("wallEnergy", wallEnergy_);
+        this->getModelProperty("pairContacts", pairContacts_);
+        this->getModelProperty("pairImpacts", pairImpacts_);
+        this->getModelProperty("pairImpactSpeedSum", pairImpactSpeedSum_);
+        this->getModelProperty("pairImpactSpeedMax", pairImpactSpeedMax_);
+        scalarList pairHistogram;
+        this->getModelProperty("pairImpactHistogram", pairHistogram);
+        if (pairHistogram.size() == impactSpeedBins_)
+        {
+            pairImpactHistogram_ = pairHistogram;
+        }
+        this->getModelProperty("pairEnergy", pairEnergy_);
 
         // opened now: a restart after which no sample is taken must not
         // keep the rows after its start
@@ -329,7 +410,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     impactSpeedBinWidth_(s.impactSpeedBinWidth_),
     z0_(s.z0_),
     length_(s.length_),
-    contactCounts_(s.contactCounts_),
+    traces_(s.traces_),
     started_(s.started_),
     lastSample_(s.lastSample_),
     contacts_(s.contacts_),
@@ -337,6 +418,13 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     impactSpeedSum_(s.impactSpeedSum_),
     impactSpeedMax_(s.impactSpeedMax_),
     impactHistogram_(s.impactHistogram_),
+    wallEnergy_(s.wallEnergy_),
+    pairContacts_(s.pairContacts_),
+    pairImpacts_(s.pairImpacts_),
+    pairImpactSpeedSum_(s.pairImpactSpeedSum_),
+    pairImpactSpeedMax_(s.pairImpactSpeedMax_),
+    pairImpactHistogram_(s.pairImpactHistogram_),
+    pairEnergy_(s.pairEnergy_),
     blockedTime_(s.blockedTime_)
 {}
 
@@ -354,14 +442,11 @@ void Foam::RiserTransportStatistics<CloudType>::preEvolve
     {
         return;
     }
-    // the contacts completed before the start (read with the parcels) are
-    // not this run's
+    // the contacts completed (and the energy dissipated) before the start,
+    // read with the parcels, are not this run's
     for (const auto& p : this->owner())
     {
-        contactCounts_.set
-        (
-            labelPair(p.origProc(), p.origId()), p.wallContacts().count
-        );
+        traces_.set(labelPair(p.origProc(), p.origId()), stateOf(p.contacts()));
     }
     started_ = true;
 }
@@ -410,6 +495,18 @@ void Foam::RiserTransportStatistics<CloudType>::write()
     reduce(speedMax, maxOp<scalar>());
     Pstream::listCombineGather(histogram, plusEqOp<scalar>());
     Pstream::listCombineScatter(histogram);
+    scalar wallEnergy = wallEnergy_, pairContacts = pairContacts_;
+    scalar pairImpacts = pairImpacts_, pairSpeedSum = pairImpactSpeedSum_;
+    scalar pairSpeedMax = pairImpactSpeedMax_, pairEnergy = pairEnergy_;
+    scalarList pairHistogram(pairImpactHistogram_);
+    reduce(wallEnergy, sumOp<scalar>());
+    reduce(pairContacts, sumOp<scalar>());
+    reduce(pairImpacts, sumOp<scalar>());
+    reduce(pairSpeedSum, sumOp<scalar>());
+    reduce(pairSpeedMax, maxOp<scalar>());
+    reduce(pairEnergy, sumOp<scalar>());
+    Pstream::listCombineGather(pairHistogram, plusEqOp<scalar>());
+    Pstream::listCombineScatter(pairHistogram);
 
     this->setModelProperty("lastSample", lastSample_);
     this->setModelProperty("blockedTime", blockedTime_);
@@ -418,17 +515,34 @@ void Foam::RiserTransportStatistics<CloudType>::write()
     this->setModelProperty("impactSpeedSum", speedSum);
     this->setModelProperty("impactSpeedMax", speedMax);
     this->setModelProperty("impactHistogram", histogram);
+    this->setModelProperty("wallEnergy", wallEnergy);
+    this->setModelProperty("pairContacts", pairContacts);
+    this->setModelProperty("pairImpacts", pairImpacts);
+    this->setModelProperty("pairImpactSpeedSum", pairSpeedSum);
+    this->setModelProperty("pairImpactSpeedMax", pairSpeedMax);
+    this->setModelProperty("pairImpactHistogram", pairHistogram);
+    this->setModelProperty("pairEnergy", pairEnergy);
 
     if (!Pstream::master())
     {
         contacts = impacts = speedSum = speedMax = 0;
         histogram = Zero;
+        wallEnergy = pairContacts = pairImpacts = pairSpeedSum = 0;
+        pairSpeedMax = pairEnergy = 0;
+        pairHistogram = Zero;
     }
     contacts_ = contacts;
     impacts_ = impacts;
     impactSpeedSum_ = speedSum;
     impactSpeedMax_ = speedMax;
     impactHistogram_ = histogram;
+    wallEnergy_ = wallEnergy;
+    pairContacts_ = pairContacts;
+    pairImpacts_ = pairImpacts;
+    pairImpactSpeedSum_ = pairSpeedSum;
+    pairImpactSpeedMax_ = pairSpeedMax;
+    pairImpactHistogram_ = pairHistogram;
+    pairEnergy_ = pairEnergy;
 }
 
 

@@ -162,6 +162,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     pairOverlapMax_(cm.pairOverlapMax_),
     section_(cm.section_),
     events_(cm.events_),
+    pairEvents_(cm.pairEvents_),
     lost_(cm.lost_)
 {}
 
@@ -681,7 +682,49 @@ void Foam::RiserWallContact<CloudType>::checkInside
 
 
 template<class CloudType>
-void Foam::RiserWallContact<CloudType>::wallContactGoesOn
+typename Foam::RiserWallContact<CloudType>::pairKey
+Foam::RiserWallContact<CloudType>::makePairKey
+(
+    const labelPair& a,
+    const labelPair& b
+)
+{
+    const labelPair& lo = a < b ? a : b;
+    const labelPair& hi = a < b ? b : a;
+    pairKey k;
+    k[0] = lo.first();
+    k[1] = lo.second();
+    k[2] = hi.first();
+    k[3] = hi.second();
+    return k;
+}
+
+
+template<class CloudType>
+riser::PairContactState Foam::RiserWallContact<CloudType>::pairHandOver
+(
+    const labelPair& a,
+    const labelPair& b,
+    const vector& spring
+) const
+{
+    riser::PairContactState c;
+    c.spring = toCore(spring);
+    const auto iter = pairEvents_.cfind(makePairKey(a, b));
+    if (iter.found())
+    {
+        // kept in the lower particle's frame
+        c.force = toCore(a < b ? (*iter).force : -(*iter).force);
+        c.forceKnown = true;
+        c.approachSpeed = (*iter).approachSpeed;
+    }
+    return c;
+}
+
+
+template<class CloudType>
+typename Foam::RiserWallContact<CloudType>::contactEvent&
+Foam::RiserWallContact<CloudType>::wallContactGoesOn
 (
     const labelPair& key,
     const scalar t,
@@ -699,15 +742,18 @@ void Foam::RiserWallContact<CloudType>::wallContactGoesOn
         events_.insert
         (
             key,
-            contactEvent{t - h, overlap, normalForce, Urel, Urel & n, spin}
+            contactEvent
+            {
+                t - h, overlap, normalForce, Urel, Urel & n, spin,
+                vector::zero, n, vector::zero
+            }
         );
+        return events_[key];
     }
-    else
-    {
-        contactEvent& e = *iter;
-        e.overlapMax = max(e.overlapMax, overlap);
-        e.normalForceMax = max(e.normalForceMax, normalForce);
-    }
+    contactEvent& e = *iter;
+    e.overlapMax = max(e.overlapMax, overlap);
+    e.normalForceMax = max(e.normalForceMax, normalForce);
+    return e;
 }
 
 
@@ -864,18 +910,39 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     {
         if (allTouchingWall[order[i]])
         {
-            grains.setWallSpring(i, 0, toCore(allWallSpring[order[i]]));
+            // with the force of its last evaluation, when this processor
+            // kept it (its own particles: for their dissipation tally)
+            const label k = order[i];
+            const auto e = events_.cfind(allKeys[k]);
+            if (e.found())
+            {
+                grains.setWallContact
+                (
+                    i, 0, toCore(allWallSpring[k]), toCore((*e).force)
+                );
+            }
+            else
+            {
+                grains.setWallSpring(i, 0, toCore(allWallSpring[k]));
+            }
         }
     }
     forAll(allRecordOwner, r)
     {
         // each pair once, from the record of the particle first in order
-        // (the spring in its frame)
+        // (the spring in its frame), with what pairEvents_ kept of it
         const auto i = grainOf.cfind(allRecordOwner[r]);
         const auto j = grainOf.cfind(allRecordOther[r]);
         if (i.found() && j.found() && *i < *j)
         {
-            grains.setPairSpring(*i, *j, toCore(allRecordSpring[r]));
+            grains.setPairContact
+            (
+                *i, *j,
+                pairHandOver
+                (
+                    allRecordOwner[r], allRecordOther[r], allRecordSpring[r]
+                )
+            );
         }
     }
     grains.setContactForces(grainF, grainT);
@@ -923,6 +990,71 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
             }
         }
     }
+
+    // The contact trace of the flow step (contactTrace.H): each grain's
+    // dissipation in wall and pair contacts, and its completed pair
+    // contacts, to its parcel; and what the next flow step is handed of the
+    // contacts in progress: the walls' last forces (in events_), the pairs'
+    // approach speeds and last forces (pairEvents_, renewed for the pairs
+    // of these particles)
+    {
+        forAll(parcels, i)
+        {
+            const label gi = ownGrain[i];
+            addWallEnergy(*parcels[i], grains.wallEnergy(gi));
+            recordPairContacts
+            (
+                *parcels[i], label(grains.pairContactsCompleted(gi)),
+                grains.pairImpactSpeed(gi), grains.pairEnergy(gi)
+            );
+            const riser::WallContactState& c = grains.wallContact(gi, 0);
+            auto e = events_.find(keys[i]);
+            if (c.touching && e.found())
+            {
+                (*e).force = fromCore(c.force);
+                (*e).normal = fromCore(c.normal);
+                (*e).wallVelocity = fromCore(c.wallVelocity);
+            }
+        }
+        DynamicList<pairKey> ended;
+        forAllConstIters(pairEvents_, iter)
+        {
+            const pairKey& k = iter.key();
+            if
+            (
+                grainOf.found(labelPair(k[0], k[1]))
+             || grainOf.found(labelPair(k[2], k[3]))
+            )
+            {
+                ended.append(k);
+            }
+        }
+        for (const pairKey& k : ended)
+        {
+            pairEvents_.erase(k);
+        }
+        grains.forEachPairContactState
+        (
+            [&](std::size_t i, std::size_t j, const riser::PairContactState& c)
+            {
+                // in the frame of the lower (origProc, origId); every
+                // processor keeps the pairs of all (it steps them all)
+                const labelPair& ki = allKeys[order[i]];
+                const labelPair& kj = allKeys[order[j]];
+                const bool iLower = ki < kj;
+                pairEvents_.set
+                (
+                    makePairKey(ki, kj),
+                    pairContactEvent
+                    {
+                        c.approachSpeed,
+                        fromCore(iLower ? c.force : riser::Vector(-c.force))
+                    }
+                );
+            }
+        );
+    }
+
 
     // what the contacts added to the free motion of every particle of the
     // group (a particle may change processor in its move through the mesh),
@@ -1008,6 +1140,10 @@ void Foam::RiserWallContact<CloudType>::collide()
 
     for (parcelType& p : this->owner())
     {
+        // the contact force the previous sub-cycle left, on the effective
+        // inertia (the start of this sub-cycle's dissipation trapezoid)
+        const scalar mEff = effectiveMass(p);
+        const vector Fprev = (mEff/p.mass())*p.f();
         p.f() = Zero;
         p.torque() = Zero;
 
@@ -1020,15 +1156,25 @@ void Foam::RiserWallContact<CloudType>::collide()
 
         const vector spin = rotation_ ? p.omega() : vector::zero;
         const scalar overlap = cp.overlap;
+        const vector n = fromCore(cp.normal);
+
+        // F_prev's part of the trapezoid, with its own evaluation's normal
+        // and wall velocity (those of now for a contact in progress at a
+        // restart: events_ is not stored)
+        const auto event = events_.cfind(key);
+        const vector nPrev = event.found() ? (*event).normal : n;
+        const vector UwallPrev = event.found() ? (*event).wallVelocity : Uwall;
+        const scalar workBefore =
+            Fprev & (p.U() - UwallPrev + (spin ^ (Rp*nPrev)));
 
         if (overlap <= 0)
         {
-            wallContactEnds(p, key, t, p.U() - Uwall, fromCore(cp.normal), spin);
+            addWallEnergy(p, -0.5*dt*workBefore);
+            wallContactEnds(p, key, t, p.U() - Uwall, n, spin);
             // no record accessed: update() below drops the tangential spring
             continue;
         }
 
-        const vector n = fromCore(cp.normal);
         const vector U = p.U() - Uwall + (spin ^ (Rp*n));
 
         // the tangential spring, kept in the current tangent plane
@@ -1036,7 +1182,6 @@ void Foam::RiserWallContact<CloudType>::collide()
             p.collisionRecords().matchWallRecord(0.99*Rp*n, Rp).collisionData();
         spring = advancedSpring(spring, n, U, dt);
 
-        const scalar mEff = effectiveMass(p);
         const riser::ContactForce c =
             law_.force
             (
@@ -1054,7 +1199,12 @@ void Foam::RiserWallContact<CloudType>::collide()
             p.torque() = (Rp*n) ^ Ft;
         }
 
-        wallContactGoesOn(key, t, dt, overlap, mag(Fn), p.U() - Uwall, n, spin);
+        addWallEnergy(p, -0.5*dt*(workBefore + ((Fn + Ft) & U)));
+        contactEvent& e =
+            wallContactGoesOn(key, t, dt, overlap, mag(Fn), p.U() - Uwall, n, spin);
+        e.force = Fn + Ft;
+        e.normal = n;
+        e.wallVelocity = Uwall;
     }
 
     if (pairLaw_.valid())
