@@ -325,6 +325,26 @@ cloudFunctions {}
        % pairs})
 
 
+def on_riser_grid(case, solver, D=0.1, L=0.1):
+    """Move a wall_contact_case (riser diameter D) from its box to the
+    periodic riser O-grid of length L (riserMesh: 6 cells across the core,
+    10 along, cyclic ends), the mesh riserParcelFoam needs (its points on
+    the wall), and set its application to solver."""
+    os.remove(os.path.join(case, "system", "blockMeshDict"))
+    riser_mesh(case, D, L, 6, nz=10, ends="cyclic")
+    ff.set_entry(os.path.join(case, "system/controlDict"), "application", solver)
+    ff.write_dictionary(os.path.join(case, "0/U"), """
+dimensions [0 1 -1 0 0 0 0];
+internalField uniform (0 0 0);
+boundaryField
+{
+    riserWall { type fixedValue; value uniform (0 0 0); }
+    bottom { type cyclic; }
+    top { type cyclic; }
+}
+""", "volVectorField")
+
+
 def wall_contacts(case):
     """riserWallContact's completed contacts in case, in the order they
     ended (Table: origProc origId tStart tEnd duration overlapMax ...)"""

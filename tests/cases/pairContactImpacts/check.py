@@ -5,17 +5,12 @@ import os
 import sys
 
 from riserfoam import cases, foamfields
+from riserfoam.checks import Checks
 
-failures = 0
+checks = Checks()
+check = checks.near
 
 
-def check(label, value, expected, tol, scale=None):
-    global failures
-    err = abs(value - expected) / abs(scale if scale else expected)
-    ok = err < tol
-    failures += not ok
-    print("%-52s %12.6g expected %12.6g  rel. error %.2e (tol %.0e) %s"
-          % (label, value, expected, err, tol, "ok" if ok else "FAILED"))
 
 
 def final_velocities(case, end):
@@ -90,5 +85,4 @@ print("without pairs the two pass through each other")
 U = impact("noPairs", 0.01, 0.01, 0.5, -0.5, None)
 check("  particle 0 keeps its velocity", U[0][0], 0.5, 1e-9)
 
-print("%d check(s) failed" % failures)
-sys.exit(1 if failures else 0)
+checks.exit()

@@ -8,18 +8,13 @@ import shutil
 import sys
 
 from riserfoam import cases, foamfields
+from riserfoam.checks import Checks
 
-failures = 0
+checks = Checks()
+check = checks.near
 RISER, STOCK = "riserParcelFoam", "icoUncoupledKinematicParcelFoam"
 
 
-def check(label, value, expected, tol, scale=None):
-    global failures
-    err = abs(value - expected) / abs(scale if scale else expected)
-    ok = err < tol
-    failures += not ok
-    print("%-60s %12.6g expected %12.6g  rel. error %.2e (tol %.0e) %s"
-          % (label, value, expected, err, tol, "ok" if ok else "FAILED"))
 
 
 # two ores, soft (E = 1e8 Pa) so that a contact (~0.5 ms) spans a few flow
@@ -34,19 +29,7 @@ def make(case, solver, positions, velocities, pairs, diameters=None, end=end):
                             wall_E=E, wall_nu=nu, e_n=0.5, e_t=1.0, mu=0.0,
                             velocities=velocities, positions=positions,
                             dt=dt, end=end, pairs=pairs, diameters=diameters)
-    os.remove(os.path.join(case, "system", "blockMeshDict"))
-    cases.riser_mesh(case, 0.1, 0.1, 6, nz=10, ends="cyclic")
-    foamfields.set_entry(os.path.join(case, "system/controlDict"), "application", solver)
-    foamfields.write_dictionary(os.path.join(case, "0/U"), """
-dimensions [0 1 -1 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    riserWall { type fixedValue; value uniform (0 0 0); }
-    bottom { type cyclic; }
-    top { type cyclic; }
-}
-""", "volVectorField")
+    cases.on_riser_grid(case, solver)
 
 
 def solve(case, solver, until=None):
@@ -82,7 +65,7 @@ for e in (0.3, 0.76, 1.0):
     check("  e_n = %g: particle 1 after/before" % e, U[1][0] / 0.5, e, 5e-3)
     if "without the mesh" not in log:
         print("FAILED: the contact was not sub-stepped without the mesh")
-        failures += 1
+        checks.failures += 1
 
 print("head-on, 10 mm against 6 mm at +0.5 and -0.2 m/s: momentum and e_n")
 m0, m1 = (rho * math.pi / 6 * d ** 3 for d in (0.01, 0.006))
@@ -140,7 +123,7 @@ check("  restarted mid-contact against uninterrupted", restarted, 0.0, 1e-9, 1.0
 if not forgotten > 1e-4:
     print("FAILED: forgetting the springs changes the result by %.2e < 1e-4: the check is blind"
           % forgotten)
-    failures += 1
+    checks.failures += 1
 else:
     print("  the springs forgotten at the restart: %.2e (> 1e-4: the check sees them)" % forgotten)
 
@@ -165,7 +148,7 @@ check("  pairEnergy restarted mid-contact against uninterrupted [J]",
 if trace("whole", "pairContacts") != [1, 1] or trace("split", "pairContacts") != [1, 1]:
     print("FAILED: pairContacts %s (whole), %s (split): one each expected"
           % (trace("whole", "pairContacts"), trace("split", "pairContacts")))
-    failures += 1
+    checks.failures += 1
 # the approach speed: the normal relative speed when the straight paths
 # bring the centres to d = 10 mm apart: relative position (0.024 - t, 0,
 # 0.00445 - 0.1 t) m, relative velocity (1, 0, 0.1) m/s; the engine takes it
@@ -214,10 +197,10 @@ print("  pairs in contact across the boundary: in %d steps, up to %d at once"
       % (steps, max(across or [0])))
 if steps < 10:
     print("FAILED: fewer than 10 steps with pairs across the boundary: the check is blind")
-    failures += 1
+    checks.failures += 1
 if "outside the pipe" in log:
     print("FAILED: a particle left the pipe")
-    failures += 1
+    checks.failures += 1
 
 
 def state(case):
@@ -231,7 +214,7 @@ def state(case):
 a, b = state("rowsSerial"), state("rowsParallel")
 if len(a) != len(rows) or len(b) != len(rows):
     print("FAILED: %d parcels serial, %d parallel, %d injected" % (len(a), len(b), len(rows)))
-    failures += 1
+    checks.failures += 1
 else:
     dx = max(math.dist(p, q) for (p, _), (q, _) in zip(a, b))
     du = max(math.dist(u, v) for (_, u), (_, v) in zip(a, b))
@@ -254,7 +237,7 @@ if refused and "entry 'pairs'" in text and "riserParcelFoam" in text:
     print("  refused: " + next(l.strip() for l in text.splitlines() if "entry 'pairs'" in l))
 else:
     print("FAILED: the stock cloud ran pairs in parallel, or its error does not name 'pairs'")
-    failures += 1
+    checks.failures += 1
 
 print("two ores released overlapping each other: refused, naming both")
 make("overlapping", RISER, [(0.0, 0.0, 0.02), (0.0099, 0.0, 0.02)], [(0.0, 0.0), (0.0, 0.0)],
@@ -266,7 +249,6 @@ if refused and re.search(r"particles \d+ \(processor 0\) at .* and \d+ \(process
     print("  refused: " + next(l.strip() for l in text.splitlines() if "overlapping each" in l))
 else:
     print("FAILED: overlapping ores at release were not refused with both named")
-    failures += 1
+    checks.failures += 1
 
-print("%d check(s) failed" % failures)
-sys.exit(1 if failures else 0)
+checks.exit()

@@ -5,19 +5,13 @@ import os
 import sys
 
 from riserfoam import cases, foamfields
+from riserfoam.checks import Checks
 
-failures = 0
+checks = Checks()
+check = checks.near
 SOLVER = "riserParcelFoam"
 
 
-def check(label, value, expected, tol, scale):
-    """|value - expected| / scale < tol"""
-    global failures
-    err = abs(value - expected) / abs(scale)
-    ok = err < tol
-    failures += not ok
-    print("%-58s %13.7g expected %13.7g  error %.2e (tol %.1e) %s"
-          % (label, value, expected, err, tol, "ok" if ok else "FAILED"))
 
 
 # soft ores (a contact of ~0.5 ms spans a few flow steps of 1e-4 s) in a
@@ -50,19 +44,7 @@ def make(case, velocities, e_n, positions=None, pairs=None, mu=0.0,
                             wall_E=E, wall_nu=nu, e_n=e_n, e_t=1.0, mu=mu,
                             velocities=velocities, positions=positions, dt=dt, end=end,
                             steps_per_contact=N, normal_force=normal_force, pairs=pairs)
-    os.remove(os.path.join(case, "system", "blockMeshDict"))
-    cases.riser_mesh(case, 0.1, 0.1, 6, nz=10, ends="cyclic")
-    foamfields.set_entry(os.path.join(case, "system/controlDict"), "application", SOLVER)
-    foamfields.write_dictionary(os.path.join(case, "0/U"), """
-dimensions [0 1 -1 0 0 0 0];
-internalField uniform (0 0 0);
-boundaryField
-{
-    riserWall { type fixedValue; value uniform (0 0 0); }
-    bottom { type cyclic; }
-    top { type cyclic; }
-}
-""", "volVectorField")
+    cases.on_riser_grid(case, SOLVER)
     log = cases.run([SOLVER, "-case", case], os.path.join(case, "log." + SOLVER))
     if "outside the pipe" in log:
         print("FAILED: a particle left the pipe in %s" % case)
@@ -97,7 +79,7 @@ for e in (0.3, 0.76, 1.0):
                positions=[(-0.0055, 0.0, 0.02), (0.0055, 0.0, 0.02)], pairs=(e, 1.0, 0.0))
     if "without the mesh" not in log:
         print("FAILED: the contact was not sub-stepped without the mesh")
-        failures += 1
+        checks.failures += 1
     U, pair, count, speed, wall = fields(case, "U", "pairEnergy", "pairContacts",
                                          "pairImpactSpeed", "wallEnergy")
     scale = 0.5 * Meq * v * v
@@ -109,7 +91,7 @@ for e in (0.3, 0.76, 1.0):
     if count != [1, 1] or any(abs(s - v) > 1e-9 for s in speed) or wall != [0, 0]:
         print("FAILED: pairContacts %s, pairImpactSpeed %s, wallEnergy %s: 1 each, %g m/s"
               " and 0 expected" % (count, speed, wall, v))
-        failures += 1
+        checks.failures += 1
 
 print("one ore thrown normally at the wall at 0.5 m/s: wallEnergy = 1/2 m v^2 (1 - e_n^2)")
 v = 0.5
@@ -123,7 +105,7 @@ for e in (0.3, 0.76, 1.0):
           scale - kinetic(U), TOL_LOSS, scale)
     if count != [1]:
         print("FAILED: %s wall contacts, 1 expected" % count)
-        failures += 1
+        checks.failures += 1
 
 print("the same beside a resting ore 0.1 mm away (a cluster: the granular engine)")
 R = 0.05
@@ -134,7 +116,7 @@ for e in (0.3, 0.76):
                positions=[(x0, 0.0, 0.02), (x0, 0.0, 0.02 + d + 1e-4)], pairs=(0.5, 1.0, 0.0))
     if "without the mesh" not in log:
         print("FAILED: the ores were not a cluster")
-        failures += 1
+        checks.failures += 1
     U, wall, pair = fields(case, "U", "wallEnergy", "pairEnergy")
     scale = 0.5 * m * v * v
     check("  e_n = %g: wallEnergy of the thrown ore [J]" % e, wall[0], scale * (1 - e * e), TOL,
@@ -144,7 +126,7 @@ for e in (0.3, 0.76):
     if wall[1] != 0 or pair != [0, 0]:
         print("FAILED: the resting ore's wallEnergy %g, pairEnergy %s: none expected"
               % (wall[1], pair))
-        failures += 1
+        checks.failures += 1
 
 print("an ore thrown obliquely at the wall, sliding along the axis (mu = 0.2, e_n = 0.76)")
 vn, vt, mu, e = 0.5, 0.6, 0.2, 0.76
@@ -160,5 +142,4 @@ check("  wallEnergy, normal + friction [J]", wall[0], normal + friction, TOL, sc
 check("  wallEnergy against the kinetic energy lost", wall[0], scale - kinetic(U), TOL_LOSS, scale)
 print("  (normal damping %.6g J, friction %.6g J)" % (normal, friction))
 
-print("%d check(s) failed" % failures)
-sys.exit(1 if failures else 0)
+checks.exit()

@@ -4,17 +4,12 @@ import os
 import sys
 
 from riserfoam import cases
+from riserfoam.checks import Checks
 
-failures = 0
+checks = Checks()
+check = checks.near
 
 
-def check(label, value, expected, tol):
-    global failures
-    err = abs(value - expected) / abs(expected)
-    ok = err < tol
-    failures += not ok
-    print("%-44s %12.6g expected %12.6g  rel. error %.2e (tol %.0e) %s"
-          % (label, value, expected, err, tol, "ok" if ok else "FAILED"))
 
 
 def run(case):
@@ -30,8 +25,7 @@ def must_run(case):
         sys.stdout.write(open(case + "/log.icoUncoupledKinematicParcelFoam").read()[-3000:])
         sys.exit("FAILED: %s did not run" % case)
     if "outside the pipe" in open(case + "/log.icoUncoupledKinematicParcelFoam").read():
-        global failures
-        failures += 1
+        checks.failures += 1
         print("FAILED: a particle left the pipe in %s" % case)
 
 
@@ -67,7 +61,7 @@ cases.wall_contact_case("test3_e0", D=0.1, radius=R, rho=rho, E=E, nu=nu, wall_E
 rc = run("test3_e0")
 log = open("test3_e0/log.icoUncoupledKinematicParcelFoam").read()
 rejected = rc != 0 and "entry 'normalRestitution' = 0 is outside the allowed range (0, 1]" in log
-failures += not rejected
+checks.failures += not rejected
 print("  e = 0 rejected with an error naming normalRestitution: %s" % ("ok" if rejected else "FAILED"))
 
 # --- test 4 ---------------------------------------------------------------
@@ -124,5 +118,4 @@ try:
 except ImportError:
     print("matplotlib missing: plot skipped")
 
-print("%d check(s) failed" % failures)
-sys.exit(1 if failures else 0)
+checks.exit()

@@ -96,73 +96,41 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
     ParcelType::readFields(c);
 
     // the contact trace: zero for a cloud written without it (the wall
-    // counts, and the energies with the pair contacts, which came later)
-    IOobject contactsIO(c.fieldIOobject("wallContacts", IOobject::MUST_READ));
-    if (contactsIO.typeHeaderOk<IOField<label>>(true))
+    // counts, and the energies with the pair contacts, which came later).
+    // One field into each parcel's trace; a group's first field may be
+    // absent (false), the others must then be there.
+    auto readTrace = [&c, valid](const word& name, auto member, const bool first)
     {
-        IOField<label> contacts(contactsIO, valid);
-        c.checkFieldIOobject(c, contacts);
-        IOField<scalar> overlapMax
-        (
-            c.fieldIOobject("wallOverlapMax", IOobject::MUST_READ),
-            valid
-        );
-        c.checkFieldIOobject(c, overlapMax);
-        IOField<scalar> impactSpeed
-        (
-            c.fieldIOobject("wallImpactSpeed", IOobject::MUST_READ),
-            valid
-        );
-        c.checkFieldIOobject(c, impactSpeed);
-
+        typedef typename std::decay<decltype(contactTrace().*member)>::type Type;
+        IOobject io(c.fieldIOobject(name, IOobject::MUST_READ));
+        if (first && !io.template typeHeaderOk<IOField<Type>>(true))
+        {
+            return false;
+        }
+        IOField<Type> field(io, valid);
+        c.checkFieldIOobject(c, field);
         label i = 0;
         for (HistoryParcel<ParcelType>& p : c)
         {
-            p.contacts_.wallContacts = contacts[i];
-            p.contacts_.wallOverlapMax = overlapMax[i];
-            p.contacts_.wallImpactSpeed = impactSpeed[i];
-            ++i;
+            p.contacts_.*member = field[i++];
         }
+        return true;
+    };
+    if (readTrace("wallContacts", &contactTrace::wallContacts, true))
+    {
+        readTrace("wallOverlapMax", &contactTrace::wallOverlapMax, false);
+        readTrace("wallImpactSpeed", &contactTrace::wallImpactSpeed, false);
     }
     else if (valid)
     {
         Info<< "    " << c.name() << ": no wall-contact trace written at "
             << c.time().timeName() << "; the counts start there" << endl;
     }
-
-    IOobject energyIO(c.fieldIOobject("wallEnergy", IOobject::MUST_READ));
-    if (energyIO.typeHeaderOk<IOField<scalar>>(true))
+    if (readTrace("wallEnergy", &contactTrace::wallEnergy, true))
     {
-        IOField<scalar> wallEnergy(energyIO, valid);
-        c.checkFieldIOobject(c, wallEnergy);
-        IOField<label> pairContacts
-        (
-            c.fieldIOobject("pairContacts", IOobject::MUST_READ),
-            valid
-        );
-        c.checkFieldIOobject(c, pairContacts);
-        IOField<scalar> pairImpactSpeed
-        (
-            c.fieldIOobject("pairImpactSpeed", IOobject::MUST_READ),
-            valid
-        );
-        c.checkFieldIOobject(c, pairImpactSpeed);
-        IOField<scalar> pairEnergy
-        (
-            c.fieldIOobject("pairEnergy", IOobject::MUST_READ),
-            valid
-        );
-        c.checkFieldIOobject(c, pairEnergy);
-
-        label i = 0;
-        for (HistoryParcel<ParcelType>& p : c)
-        {
-            p.contacts_.wallEnergy = wallEnergy[i];
-            p.contacts_.pairContacts = pairContacts[i];
-            p.contacts_.pairImpactSpeed = pairImpactSpeed[i];
-            p.contacts_.pairEnergy = pairEnergy[i];
-            ++i;
-        }
+        readTrace("pairContacts", &contactTrace::pairContacts, false);
+        readTrace("pairImpactSpeed", &contactTrace::pairImpactSpeed, false);
+        readTrace("pairEnergy", &contactTrace::pairEnergy, false);
     }
     else if (valid)
     {
