@@ -16,13 +16,22 @@ number of particles near a contact in a step, of tracked sub-cycles and of
 clustered particles and their contact sub-steps, and with pairs the largest
 pair overlap of the run (fraction of d; the log's riserWallContact line).
 
-usage: oreCloud.py [--quick] --build DIR --results DIR
-writes <results>/oreCloud.json and <results>/oreCloud.md
+With --scaling instead: the cost per particle-step and the memory per
+particle of the wall-and-pair scene (A = 0.2 m, f = 4 Hz) at C_v = 0.05
+for 1e3, 1e4 and 1e5 ores (quick: 1e3, 3e3), the section's length grown
+with the number (N V_p / (C_v pi D^2/4); riserMesh -n 4, 2.5 cm cells
+along), from the solver's CPU time between steps 10 and 40 (the log's
+ExecutionTime) and its peak resident memory (/usr/bin/time).
+
+usage: oreCloud.py [--quick] [--scaling] --build DIR --results DIR
+writes <results>/oreCloud.json and <results>/oreCloud.md (--scaling:
+oreScaling.json and oreScaling.md)
 License: GPL-3.0-or-later
 """
 import argparse
 import datetime
 import json
+import math
 import os
 import re
 import resource
@@ -52,9 +61,9 @@ def remove_entry(path, entry):
                    check=True, stdout=subprocess.DEVNULL)
 
 
-def make(case, end, A, f, collision, pairs):
+def make(case, end, A, f, collision, pairs, L=1.0, n=12, nz=None, Cv=0.0667):
     cases.copy_tutorial("riser/oscillatingContact", case)
-    cases.riser_mesh(case, D=0.1, L=1.0, n=12)
+    cases.riser_mesh(case, D=0.1, L=L, n=n, nz=nz)
     props = os.path.join(case, "constant", "riserProperties")
     set_entry(props, "A", repr(A))
     set_entry(props, "f", repr(f))
@@ -66,12 +75,58 @@ def make(case, end, A, f, collision, pairs):
     set_entry(cloud, "cloudFunctions", "{}")
     set_entry(cloud, "subModels/injectionModels",
               "{ ores { type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;"
-              " solidsFraction 0.0667; seed 1; velocity carrier;"
-              " sizeDistribution { type fixedValue; fixedValueDistribution { value 0.01; } } } }")
+              " solidsFraction %g; seed 1; velocity carrier;"
+              " sizeDistribution { type fixedValue; fixedValueDistribution { value 0.01; } } } }"
+              % Cv)
     set_entry(cloud, "subModels/riserWallContactCoeffs/stepsPerContact", "10")
     set_entry(cloud, "subModels/collisionModel", collision)
     if pairs:
         set_entry(cloud, "subModels/riserWallContactCoeffs/pairs", pairs)
+
+
+def scaling(args, work):
+    """cost per particle-step and memory per particle against N (see above)"""
+    Vp, area, Cv = math.pi / 6 * 0.01 ** 3, math.pi / 4 * 0.1 ** 2, 0.05
+    rows = []
+    for N in ((1000, 3000) if args.quick else (1000, 10000, 100000)):
+        L = N * Vp / (Cv * area)
+        case = os.path.join(work, "scaling", "N%d" % N)
+        make(case, 40e-4, 0.2, 4.0, "riserWallContact", VARIANTS["wall+pairs"][1],
+             L=L, n=4, nz=max(4, int(round(L / 0.025))), Cv=Cv)
+        log = os.path.join(case, "log.riserParcelFoam")
+        with open(log, "w") as out:
+            subprocess.run(["/usr/bin/time", "-v", "riserParcelFoam", "-case", case],
+                           stdout=out, stderr=subprocess.STDOUT, check=True)
+        text = open(log).read()
+        cpu = [float(c) for c in re.findall(r"ExecutionTime = (\S+) s", text)]
+        placed = int(re.search(r"riserFill: placed (\d+) ores", text).group(1))
+        rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1))
+        clustered = [int(c) for c in re.findall(r"(\d+) clustered particle", text)] or [0]
+        rows.append({"N": placed, "L_m": L, "us_per_particle_step": 1e6 * (cpu[39] - cpu[9]) / (30 * placed),
+                     "peak_rss_MB": rss / 1024, "max_clustered": max(clustered),
+                     "outside_pipe_reports": text.count("outside the pipe")})
+        print(rows[-1])
+    for a, b in zip(rows, rows[1:]):
+        b["bytes_per_particle"] = 1024 * 1024 * (b["peak_rss_MB"] - a["peak_rss_MB"]) / (b["N"] - a["N"])
+    result = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+              "load": open("/proc/loadavg").read().split()[:3], "rows": rows}
+    with open(os.path.join(args.results, "oreScaling.json"), "w") as out:
+        json.dump(result, out, indent=1)
+    with open(os.path.join(args.results, "oreScaling.md"), "w") as out:
+        out.write("# Ores with wall and pair contact against their number "
+                  "(benchmarks/oreCloud.py --scaling%s)\n\n" % (" --quick" if args.quick else ""))
+        out.write("Measured %s, load average %s. C_v = 0.05, A = 0.2 m, f = 4 Hz, dt = 1e-4 s; "
+                  "CPU time of steps 10..40 per particle-step; peak resident memory of the "
+                  "solver and its growth per particle between two sizes.\n\n"
+                  % (result["date"], " ".join(result["load"])))
+        out.write("| ores | section length [m] | us per particle-step | most clustered | "
+                  "peak RSS [MB] | bytes per particle (from the previous row) | "
+                  "outside-pipe reports |\n|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            out.write("| %d | %.2f | %.2f | %d | %.0f | %s | %d |\n"
+                      % (r["N"], r["L_m"], r["us_per_particle_step"], r["max_clustered"],
+                         r["peak_rss_MB"], "%.0f" % r["bytes_per_particle"]
+                         if "bytes_per_particle" in r else "", r["outside_pipe_reports"]))
 
 
 def run(case):
@@ -106,12 +161,16 @@ def run(case):
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--scaling", action="store_true")
     ap.add_argument("--build", required=True)
     ap.add_argument("--results", required=True)
     args = ap.parse_args()
     end = 0.05 if args.quick else 0.5
     work = os.path.join(os.path.abspath(args.build), "oreCloud")
     os.makedirs(args.results, exist_ok=True)
+    if args.scaling:
+        scaling(args, work)
+        return
     rows = {}
     for scene, (A, f) in SCENES.items():
         rows[scene] = {}
