@@ -111,7 +111,11 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     addedMassCoeff_(readAddedMassCoeff()),
     pairsInContact_(0),
     pairOverlapMax_(0),
-    section_(riserSection(owner.mesh()))
+    section_(riserSection(owner.mesh())),
+    cellAxisDistance_
+    (
+        owner.mesh().changing() ? scalarField() : cellAxisDistances(owner.mesh())
+    )
 {
     if (this->coeffDict().found("pairs"))
     {
@@ -162,10 +166,10 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     maxSubCycles_(cm.maxSubCycles_),
     addedMassCoeff_(cm.addedMassCoeff_),
     pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
-    needs_(cm.needs_),
     pairsInContact_(cm.pairsInContact_),
     pairOverlapMax_(cm.pairOverlapMax_),
     section_(cm.section_),
+    cellAxisDistance_(cm.cellAxisDistance_),
     events_(cm.events_),
     lost_(cm.lost_)
 {}
@@ -174,9 +178,78 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+Foam::scalarField Foam::RiserWallContact<CloudType>::cellAxisDistances
+(
+    const polyMesh& mesh
+)
+{
+    const pointField& points = mesh.points();
+    const faceList& faces = mesh.faces();
+    const labelList& owner = mesh.faceOwner();
+    const labelList& neighbour = mesh.faceNeighbour();
+    auto axisDistance = [](const point& x)
+    {
+        return Foam::sqrt(sqr(x.x()) + sqr(x.y()));
+    };
+
+    // the centre, then the points of each face of the cell
+    scalarField h(mesh.nCells());
+    forAll(h, celli)
+    {
+        h[celli] = axisDistance(mesh.cellCentres()[celli]);
+    }
+    forAll(faces, facei)
+    {
+        scalar hf = 0;
+        for (const label pointi : faces[facei])
+        {
+            hf = max(hf, axisDistance(points[pointi]));
+        }
+        h[owner[facei]] = max(h[owner[facei]], hf);
+        if (facei < mesh.nInternalFaces())
+        {
+            h[neighbour[facei]] = max(h[neighbour[facei]], hf);
+        }
+    }
+    return h;
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::checkMeshUnchanged() const
+{
+    const polyMesh& mesh = this->owner().mesh();
+    if (mesh.changing() || cellAxisDistance_.size() != mesh.nCells())
+    {
+        cellAxisDistance_.clear();
+    }
+}
+
+
+template<class CloudType>
+bool Foam::RiserWallContact<CloudType>::clearOfWall
+(
+    const parcelType& p,
+    const scalar axisOffset,
+    const scalar reach
+) const
+{
+    // the particle's distance from the axis is at most its cell's from the
+    // z axis plus the axis' offset; the tolerance is far beyond the
+    // round-off of the particle's coordinates in its tetrahedron
+    const riser::RiserFlow& flow = carrier_.riser();
+    return
+        cellAxisDistance_.size()
+     && flow.radius() - (cellAxisDistance_[p.cell()] + axisOffset) - 0.5*p.d()
+      > reach + 1e-6*flow.diameter();
+}
+
+
+template<class CloudType>
 Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
 (
-    const parcelType& p
+    const parcelType& p,
+    const scalar axisOffset
 ) const
 {
     const Time& time = this->owner().mesh().time();
@@ -193,6 +266,11 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
             << flow.diameter() << " (constant/riserProperties)"
             << exit(FatalError);
     }
+    const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
+    if (clearOfWall(p, axisOffset, speed*dt))
+    {
+        return 0;
+    }
     const scalar gap = wall.distance(toCore(p.position()), t0) - 0.5*p.d();
     if (p.age() == 0 && gap <= 0)
     {
@@ -206,7 +284,6 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
             << " >= 0; release it at least d/2 from the wall"
             << exit(FatalError);
     }
-    const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
     if (gap > speed*dt)
     {
         return 0;
@@ -304,18 +381,21 @@ void Foam::RiserWallContact<CloudType>::forEachNearPair
 
 
 template<class CloudType>
-void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
+Foam::labelList Foam::RiserWallContact<CloudType>::contactNeeds() const
 {
-    const scalar dt = this->owner().mesh().time().deltaTValue();
+    const Time& time = this->owner().mesh().time();
+    const scalar dt = time.deltaTValue();
+    checkMeshUnchanged();
+    const scalar axisOffset =
+        mag(carrier_.riser().motion().axisPosition(time.value() - dt));
 
     std::vector<const parcelType*> parcels;
     parcels.reserve(this->owner().size());
-    std::vector<label> need;
-    need.reserve(this->owner().size());
+    labelList need(this->owner().size());
     for (const parcelType& p : this->owner())
     {
+        need[parcels.size()] = nearWallSubCycles(p, axisOffset);
         parcels.push_back(&p);
-        need.push_back(nearWallSubCycles(p));
     }
     const std::size_t n = parcels.size();
 
@@ -383,38 +463,28 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
             need[i] = clusterNeed[find(i)];
         }
     }
-
-    needs_.clear();
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        needs_.set(labelPair(parcels[i]->origProc(), parcels[i]->origId()), need[i]);
-    }
+    return need;
 }
 
 
 template<class CloudType>
-Foam::label Foam::RiserWallContact<CloudType>::subCycles(const parcelType& p) const
+Foam::labelList Foam::RiserWallContact<CloudType>::subCycles() const
 {
-    const auto iter = needs_.cfind(labelPair(p.origProc(), p.origId()));
-    if (!iter.found())
+    labelList need(contactNeeds());
+    for (label& n : need)
     {
-        FatalErrorInFunction
-            << "particle " << p.origId() << " (processor " << p.origProc()
-            << ") was not in the cloud when its need of sub-cycles was"
-            << " prepared" << exit(FatalError);
+        n = max(n, label(1));
     }
-    return max(*iter, label(1));
+    return need;
 }
 
 
 template<class CloudType>
 Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
 {
-    prepareSubCycles();
     label nSub = 1, nNear = 0;
-    for (const parcelType& p : this->owner())
+    for (const label n : contactNeeds())
     {
-        const label n = needs_[labelPair(p.origProc(), p.origId())];
         if (n > 0)
         {
             ++nNear;
@@ -555,11 +625,24 @@ void Foam::RiserWallContact<CloudType>::collide()
     const riser::Wall& wall = carrier_.wall();
     const scalar t = time.value();
     const scalar dt = time.deltaTValue();
+    checkMeshUnchanged();
+    const scalar axisOffset = mag(carrier_.riser().motion().axisPosition(t));
 
     for (parcelType& p : this->owner())
     {
         p.f() = Zero;
         p.torque() = Zero;
+
+        // certainly apart from the wall and in no contact that might end
+        // now: nothing to do
+        if
+        (
+            clearOfWall(p, axisOffset, 0)
+         && (events_.empty() || !events_.found(labelPair(p.origProc(), p.origId())))
+        )
+        {
+            continue;
+        }
 
         const scalar Rp = 0.5*p.d();
         const riser::ContactPoint cp = wall.contactPoint(toCore(p.position()), Rp, t);
