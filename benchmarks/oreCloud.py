@@ -21,7 +21,8 @@ particle of the wall-and-pair scene (A = 0.2 m, f = 4 Hz) at C_v = 0.05
 for 1e3, 1e4 and 1e5 ores (quick: 1e3, 3e3), the section's length grown
 with the number (N V_p / (C_v pi D^2/4); riserMesh -n 4, 2.5 cm cells
 along), from the solver's CPU time between steps 10 and 40 (the log's
-ExecutionTime) and its peak resident memory (/usr/bin/time).
+ExecutionTime) and its peak resident memory (/usr/bin/time), without
+contact and with wall and pair contact.
 
 usage: oreCloud.py [--quick] [--scaling] --build DIR --results DIR
 writes <results>/oreCloud.json and <results>/oreCloud.md (--scaling:
@@ -90,24 +91,32 @@ def scaling(args, work):
     rows = []
     for N in ((1000, 3000) if args.quick else (1000, 10000, 100000)):
         L = N * Vp / (Cv * area)
-        case = os.path.join(work, "scaling", "N%d" % N)
-        make(case, 40e-4, 0.2, 4.0, "riserWallContact", VARIANTS["wall+pairs"][1],
-             L=L, n=4, nz=max(4, int(round(L / 0.025))), Cv=Cv)
-        log = os.path.join(case, "log.riserParcelFoam")
-        with open(log, "w") as out:
-            subprocess.run(["/usr/bin/time", "-v", "riserParcelFoam", "-case", case],
-                           stdout=out, stderr=subprocess.STDOUT, check=True)
-        text = open(log).read()
-        cpu = [float(c) for c in re.findall(r"ExecutionTime = (\S+) s", text)]
-        placed = int(re.search(r"riserFill: placed (\d+) ores", text).group(1))
-        rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1))
-        clustered = [int(c) for c in re.findall(r"(\d+) clustered particle", text)] or [0]
-        rows.append({"N": placed, "L_m": L, "us_per_particle_step": 1e6 * (cpu[39] - cpu[9]) / (30 * placed),
-                     "peak_rss_MB": rss / 1024, "max_clustered": max(clustered),
-                     "outside_pipe_reports": text.count("outside the pipe")})
-        print(rows[-1])
+        row = {"L_m": L}
+        for name in ("none", "wall+pairs"):
+            case = os.path.join(work, "scaling", "N%d_%s" % (N, name.replace("+", "_")))
+            collision, pairs = VARIANTS[name]
+            make(case, 40e-4, 0.2, 4.0, collision, pairs,
+                 L=L, n=4, nz=max(4, int(round(L / 0.025))), Cv=Cv)
+            log = os.path.join(case, "log.riserParcelFoam")
+            with open(log, "w") as out:
+                subprocess.run(["/usr/bin/time", "-v", "riserParcelFoam", "-case", case],
+                               stdout=out, stderr=subprocess.STDOUT, check=True)
+            text = open(log).read()
+            cpu = [float(c) for c in re.findall(r"ExecutionTime = (\S+) s", text)]
+            row["N"] = int(re.search(r"riserFill: placed (\d+) ores", text).group(1))
+            rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1))
+            clustered = [int(c) for c in re.findall(r"(\d+) clustered particle", text)] or [0]
+            row[name] = {"us_per_particle_step": 1e6 * (cpu[39] - cpu[9]) / (30 * row["N"]),
+                         "peak_rss_MB": rss / 1024, "max_clustered": max(clustered),
+                         "outside_pipe_reports": text.count("outside the pipe")}
+        row["ratio"] = (row["wall+pairs"]["us_per_particle_step"]
+                        / row["none"]["us_per_particle_step"])
+        rows.append(row)
+        print(row)
     for a, b in zip(rows, rows[1:]):
-        b["bytes_per_particle"] = 1024 * 1024 * (b["peak_rss_MB"] - a["peak_rss_MB"]) / (b["N"] - a["N"])
+        for name in ("none", "wall+pairs"):
+            b[name]["bytes_per_particle"] = (1024 * 1024 * (b[name]["peak_rss_MB"] - a[name]["peak_rss_MB"])
+                                             / (b["N"] - a["N"]))
     result = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
               "load": open("/proc/loadavg").read().split()[:3], "rows": rows}
     with open(os.path.join(args.results, "oreScaling.json"), "w") as out:
@@ -115,18 +124,24 @@ def scaling(args, work):
     with open(os.path.join(args.results, "oreScaling.md"), "w") as out:
         out.write("# Ores with wall and pair contact against their number "
                   "(benchmarks/oreCloud.py --scaling%s)\n\n" % (" --quick" if args.quick else ""))
-        out.write("Measured %s, load average %s. C_v = 0.05, A = 0.2 m, f = 4 Hz, dt = 1e-4 s; "
-                  "CPU time of steps 10..40 per particle-step; peak resident memory of the "
-                  "solver and its growth per particle between two sizes.\n\n"
+        out.write("Measured %s, load average %s. C_v = 0.05, A = 0.2 m, f = 4 Hz, dt = 1e-4 s, "
+                  "the section's length (and mesh) grown with the number of ores; CPU time of "
+                  "steps 10..40 per particle-step, without contact and with wall and pair "
+                  "contact, and their ratio; peak resident memory of the solver and its growth "
+                  "per particle between two sizes (the mesh's growth included).\n\n"
                   % (result["date"], " ".join(result["load"])))
-        out.write("| ores | section length [m] | us per particle-step | most clustered | "
-                  "peak RSS [MB] | bytes per particle (from the previous row) | "
-                  "outside-pipe reports |\n|---|---|---|---|---|---|---|\n")
+        out.write("| ores | section [m] | us/particle-step, no contact | wall + pairs | ratio | "
+                  "most clustered | peak RSS [MB] no contact / wall + pairs | "
+                  "bytes per particle (from the previous row) no contact / wall + pairs | "
+                  "outside-pipe reports |\n|---|---|---|---|---|---|---|---|---|\n")
         for r in rows:
-            out.write("| %d | %.2f | %.2f | %d | %.0f | %s | %d |\n"
-                      % (r["N"], r["L_m"], r["us_per_particle_step"], r["max_clustered"],
-                         r["peak_rss_MB"], "%.0f" % r["bytes_per_particle"]
-                         if "bytes_per_particle" in r else "", r["outside_pipe_reports"]))
+            a, b = r["none"], r["wall+pairs"]
+            out.write("| %d | %.2f | %.2f | %.2f | %.2f | %d | %.0f / %.0f | %s | %d |\n"
+                      % (r["N"], r["L_m"], a["us_per_particle_step"], b["us_per_particle_step"],
+                         r["ratio"], b["max_clustered"], a["peak_rss_MB"], b["peak_rss_MB"],
+                         "%.0f / %.0f" % (a["bytes_per_particle"], b["bytes_per_particle"])
+                         if "bytes_per_particle" in a else "",
+                         a["outside_pipe_reports"] + b["outside_pipe_reports"]))
 
 
 def run(case):

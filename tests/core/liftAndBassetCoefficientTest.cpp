@@ -59,6 +59,24 @@ TEST(BassetCoefficient, ExponentAppliesToTheBracket)
     EXPECT_NEAR(bassetCoefficient(BassetModel::michaelidesRoig, Re, mu, rho, R, f), 5.441386, 1e-6);
 }
 
+// C_H with the Strouhal factor given (kept by a caller for one particle
+// size and fluid) is C_H computed from mu, rho and R_p, to the bit.
+TEST(BassetCoefficient, GivenStrouhalFactor)
+{
+    const double mu = 1e-3, rho = 1000.0, R = 5e-3, f = 3.0;
+    const double factor = bassetStrouhalFactor(mu, rho, R, f);
+    EXPECT_EQ(factor, std::pow(bassetStrouhal(mu, rho, R, f), 0.82));
+    for (double Re : {0.0, 0.3, 17.0, 850.0, 1e9})
+    {
+        EXPECT_EQ(bassetCoefficient(BassetModel::michaelidesRoig, Re, f, factor),
+                  bassetCoefficient(BassetModel::michaelidesRoig, Re, mu, rho, R, f));
+        EXPECT_EQ(bassetCoefficient(BassetModel::classical, Re, f, factor), 6.0);
+    }
+    EXPECT_EQ(bassetCoefficient(BassetModel::michaelidesRoig, 100.0, 0.0, 0.0), 6.0);
+    EXPECT_THROW(bassetCoefficient(BassetModel::michaelidesRoig, -1.0, f, factor),
+                 std::invalid_argument);
+}
+
 TEST(BassetCoefficient, RejectsBadArguments)
 {
     EXPECT_THROW(bassetCoefficient(BassetModel::michaelidesRoig, 1.0, 1e-3, 1e3, 1e-3, -1.0),

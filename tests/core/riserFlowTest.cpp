@@ -66,6 +66,32 @@ TEST(RiserFlow, RiserKinematics)
     EXPECT_NEAR(flow.velocity(Vector(0, 0.05, 2), t).x(), flow.motion().riserVelocity(t), 1e-15);
 }
 
+// The kinematics taken once for a time (RiserMotion::state, as the cloud's
+// forces share them) give the values of the evaluations at t, to the bit;
+// a riser that does not oscillate has the same kinematics at every t >= 0.
+TEST(RiserFlow, StateEvaluationIsTheTimeEvaluation)
+{
+    const RiserFlow still(0.1, 1.0, RiserMotion::atRest());
+    for (double t : {0.0, 0.0123456789, 0.07, 0.21, 3.3})
+    {
+        const RiserMotion::State s = flow.motion().state(t);
+        EXPECT_EQ(s.axisPosition, flow.motion().axisPosition(t));
+        EXPECT_EQ(s.velocity, flow.motion().riserVelocity(t));
+        EXPECT_EQ(s.acceleration, flow.motion().riserAcceleration(t));
+        for (const Vector& x : {Vector(0.01, -0.02, 0.3), Vector(-0.03, 0.04, 1.0)})
+        {
+            EXPECT_TRUE(flow.velocity(x, s) == flow.velocity(x, t));
+            EXPECT_TRUE(flow.vorticity(x, s) == flow.vorticity(x, t));
+            EXPECT_TRUE(flow.materialDerivative(s) == flow.materialDerivative(x, t));
+            EXPECT_TRUE(flow.motion().radialOffset(x, s) == flow.motion().radialOffset(x, t));
+            const RiserMotion::State s0 = still.motion().state(0.0);
+            EXPECT_TRUE(still.velocity(x, s0) == still.velocity(x, t));
+            EXPECT_TRUE(still.vorticity(x, s0) == still.vorticity(x, t));
+            EXPECT_TRUE(still.materialDerivative(s0) == still.materialDerivative(x, t));
+        }
+    }
+}
+
 TEST(RiserFlow, RejectsBadArguments)
 {
     EXPECT_THROW(RiserFlow(0.0, 1.0, 0.1, 1.0, 0.0), std::invalid_argument);

@@ -13,9 +13,10 @@ Description
     113311, 2023): the analytic carrier of constant/riserProperties imposed
     on a riser mesh, and a colliding cloud evolved in it (one-way coupled).
 
-    Each step, in the stock order: store the particles' global positions,
-    move the mesh (constant/dynamicMeshDict: solidBodyMotionFunction
-    riserOscillation in the lab frame; no motion in the riser frame),
+    Each step, in the stock order: store the particles' global positions
+    (on a dynamic mesh: for a change of topology), move the mesh
+    (constant/dynamicMeshDict: solidBodyMotionFunction riserOscillation in
+    the lab frame; no motion in the riser frame),
     impose the carrier u(x, t) on the cells and on every boundary face (the
     wall moves with the riser), keep U's old time (ddt(U) of the
     interpolated carrier), then evolve the cloud, so that stock cloud
@@ -86,7 +87,12 @@ int main(int argc, char *argv[])
     {
         Info<< "Time = " << runTime.timeName() << nl << endl;
 
-        kinematicCloud.storeGlobalPositions();
+        // (the cloud's autoMap after a change of topology, which only a
+        // dynamic mesh makes: a static mesh skips this pass over the cloud)
+        if (mesh.dynamic())
+        {
+            kinematicCloud.storeGlobalPositions();
+        }
 
         mesh.update();
 

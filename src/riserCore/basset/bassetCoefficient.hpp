@@ -40,9 +40,19 @@ inline double bassetStrouhal(double mu, double rho, double radius, double freque
     return 9.0*mu/(16.0*M_PI*frequency*radius*radius*rho);
 }
 
-//- C_H for particle Reynolds number Re_p >= 0 and carrier frequency f >= 0.
-inline double bassetCoefficient(BassetModel model, double Rep, double mu,
-                                double rho, double radius, double frequency)
+//- St^0.82, the Strouhal factor of the Michaelides–Roig correlation: the
+//  same for every particle of one size in one fluid, so that a caller
+//  evaluating many such particles may keep it (a pow each).
+inline double bassetStrouhalFactor(double mu, double rho, double radius, double frequency)
+{
+    return std::pow(bassetStrouhal(mu, rho, radius, frequency), 0.82);
+}
+
+//- C_H for particle Reynolds number Re_p >= 0 and carrier frequency f >= 0,
+//  with the Strouhal factor St^0.82 of bassetStrouhalFactor given (not
+//  used by the classical model nor at f = 0).
+inline double bassetCoefficient(BassetModel model, double Rep, double frequency,
+                                double strouhalFactor)
 {
     requireNonNegative("riser::bassetCoefficient", "Re_p", Rep);
     requireNonNegative("riser::bassetCoefficient", "f", frequency);
@@ -50,9 +60,20 @@ inline double bassetCoefficient(BassetModel model, double Rep, double mu,
     {
         return classicalBassetCoefficient;
     }
-    const double St = bassetStrouhal(mu, rho, radius, frequency);
-    const double bracket = 1.0 - std::exp(-0.14*Rep*std::pow(St, 0.82));
+    const double bracket = 1.0 - std::exp(-0.14*Rep*strouhalFactor);
     return 6.00 - 3.16*std::pow(bracket, 2.5);
+}
+
+//- C_H for particle Reynolds number Re_p >= 0 and carrier frequency f >= 0.
+inline double bassetCoefficient(BassetModel model, double Rep, double mu,
+                                double rho, double radius, double frequency)
+{
+    const bool correlated = model == BassetModel::michaelidesRoig && frequency != 0.0;
+    return bassetCoefficient
+    (
+        model, Rep, frequency,
+        correlated ? bassetStrouhalFactor(mu, rho, radius, frequency) : 0.0
+    );
 }
 
 } // namespace riser

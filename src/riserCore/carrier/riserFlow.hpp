@@ -53,9 +53,13 @@ public:
     //- Carrier velocity u(x, t).
     Vector velocity(const Vector& x, double t) const
     {
-        const Vector r = motion().radialOffset(x, t);
-        const double R = radius();
-        return Vector(motion().riserVelocity(t), 0.0, uCentre_*(1.0 - r.squaredNorm()/(R*R)));
+        return velocityAt(motion().radialOffset(x, t), motion().riserVelocity(t));
+    }
+
+    //- u at x, with the riser's kinematics s = motion().state(t) at the time
+    Vector velocity(const Vector& x, const RiserMotion::State& s) const
+    {
+        return velocityAt(motion().radialOffset(x, s), s.velocity);
     }
 
     //- Material derivative Du/Dt(x, t).
@@ -64,15 +68,39 @@ public:
         return motion().acceleration(t);
     }
 
+    //- Du/Dt with the riser's kinematics s at the time (uniform in x)
+    Vector materialDerivative(const RiserMotion::State& s) const
+    {
+        return Vector(s.acceleration, 0.0, 0.0);
+    }
+
     //- Vorticity curl u (x, t).
     Vector vorticity(const Vector& x, double t) const
     {
-        const Vector r = motion().radialOffset(x, t);
+        return vorticityAt(motion().radialOffset(x, t));
+    }
+
+    //- curl u at x, with the riser's kinematics s at the time
+    Vector vorticity(const Vector& x, const RiserMotion::State& s) const
+    {
+        return vorticityAt(motion().radialOffset(x, s));
+    }
+
+private:
+    //- u at offset r from the axis of a riser moving at U_r
+    Vector velocityAt(const Vector& r, double Ur) const
+    {
+        const double R = radius();
+        return Vector(Ur, 0.0, uCentre_*(1.0 - r.squaredNorm()/(R*R)));
+    }
+
+    //- curl u at offset r from the axis
+    Vector vorticityAt(const Vector& r) const
+    {
         const double c = 2.0*uCentre_/(radius()*radius());
         return Vector(-c*r.y(), c*r.x(), 0.0);
     }
 
-private:
     CylinderWall wall_;
     double uCentre_;
 };

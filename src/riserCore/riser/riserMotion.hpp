@@ -68,13 +68,40 @@ public:
     //- Velocity relative to the riser to the lab's
     Vector labVelocity(const Vector& v, double t) const { return v + velocity(t); }
 
+    //- The riser's kinematics at one time t, for callers that ask for
+    //  several of them at that time: axisPosition(t), riserVelocity(t)
+    //  and riserAcceleration(t), to the last bit
+    struct State
+    {
+        double axisPosition;    //!< x_c(t) [m]
+        double velocity;        //!< U_r(t) [m/s]
+        double acceleration;    //!< a_r(t) [m/s^2]
+    };
+
+    State state(double t) const
+    {
+        return State{axisPosition(t), riserVelocity(t), riserAcceleration(t)};
+    }
+
     //- Offset of x from the axis in the cross-section (z component zero)
     Vector radialOffset(const Vector& x, double t) const
     {
-        return Vector(x.x() - axisPosition(t), x.y(), 0.0);
+        return offsetFromAxis(x, axisPosition(t));
+    }
+
+    //- The same, with the riser's kinematics s = state(t) at the time
+    Vector radialOffset(const Vector& x, const State& s) const
+    {
+        return offsetFromAxis(x, s.axisPosition);
     }
 
 private:
+    //- Offset of x from the axis at x_c
+    static Vector offsetFromAxis(const Vector& x, double xc)
+    {
+        return Vector(x.x() - xc, x.y(), 0.0);
+    }
+
     double A_, omega_, phi0_;
 };
 

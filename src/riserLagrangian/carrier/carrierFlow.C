@@ -52,7 +52,8 @@ Foam::carrierFlow::carrierFlow
     mesh_(U.mesh()),
     U_(U),
     evaluation_(evaluation::interpolated),
-    frame_(simulationFrame::lab)
+    frame_(simulationFrame::lab),
+    flowSteady_(false)
 {
     IOobject io
     (
@@ -84,6 +85,11 @@ Foam::carrierFlow::carrierFlow
                 motion_->diameter(), motion_->centreLineSpeed(), riser::RiserMotion::atRest()
             )
         );
+        flowSteady_ = riser_->motion().omega() == 0;
+        if (flowSteady_)
+        {
+            lastMotion_.flow = riser_->motion().state(0);
+        }
         if (dict.found("carrier"))
         {
             evaluation_ = checkedEntry::choice<evaluation>

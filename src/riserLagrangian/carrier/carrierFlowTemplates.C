@@ -53,7 +53,7 @@ Foam::vector Foam::carrierFlow::velocity
         riser_->velocity
         (
             toCore(position(p)),
-            particleTime(p.stepFraction())
+            motionAt(particleTime(p.stepFraction())).flow
         )
     );
 }
@@ -71,7 +71,7 @@ Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
         riser_->vorticity
         (
             toCore(position(p)),
-            particleTime(p.stepFraction())
+            motionAt(particleTime(p.stepFraction())).flow
         )
     );
 }
@@ -90,8 +90,7 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
     (
         riser_->materialDerivative
         (
-            toCore(vector::zero),
-            particleTime(p.stepFraction())
+            motionAt(particleTime(p.stepFraction())).flow
         )
     );
 }

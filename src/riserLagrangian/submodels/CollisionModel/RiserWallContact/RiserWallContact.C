@@ -115,7 +115,11 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     ),
     addedMassCoeff_(readAddedMassCoeff()),
     pairOverlapMax_(0),
-    section_(riserSection(owner.mesh()))
+    section_(riserSection(owner.mesh())),
+    cellAxisDistance_
+    (
+        owner.mesh().changing() ? scalarField() : cellAxisDistances(owner.mesh())
+    )
 {
     if (this->coeffDict().found("pairs"))
     {
@@ -161,6 +165,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     needs_(cm.needs_),
     pairOverlapMax_(cm.pairOverlapMax_),
     section_(cm.section_),
+    cellAxisDistance_(cm.cellAxisDistance_),
     events_(cm.events_),
     pairEvents_(cm.pairEvents_),
     lost_(cm.lost_)
@@ -170,9 +175,79 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+Foam::scalarField Foam::RiserWallContact<CloudType>::cellAxisDistances
+(
+    const polyMesh& mesh
+)
+{
+    const pointField& points = mesh.points();
+    const faceList& faces = mesh.faces();
+    const labelList& owner = mesh.faceOwner();
+    const labelList& neighbour = mesh.faceNeighbour();
+    auto axisDistance = [](const point& x)
+    {
+        return Foam::sqrt(sqr(x.x()) + sqr(x.y()));
+    };
+
+    // the centre, then the points of each face of the cell
+    scalarField h(mesh.nCells());
+    forAll(h, celli)
+    {
+        h[celli] = axisDistance(mesh.cellCentres()[celli]);
+    }
+    forAll(faces, facei)
+    {
+        scalar hf = 0;
+        for (const label pointi : faces[facei])
+        {
+            hf = max(hf, axisDistance(points[pointi]));
+        }
+        h[owner[facei]] = max(h[owner[facei]], hf);
+        if (facei < mesh.nInternalFaces())
+        {
+            h[neighbour[facei]] = max(h[neighbour[facei]], hf);
+        }
+    }
+    return h;
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::checkMeshUnchanged() const
+{
+    const polyMesh& mesh = this->owner().mesh();
+    if (mesh.changing() || cellAxisDistance_.size() != mesh.nCells())
+    {
+        cellAxisDistance_.clear();
+    }
+}
+
+
+template<class CloudType>
+bool Foam::RiserWallContact<CloudType>::clearOfWall
+(
+    const parcelType& p,
+    const scalar axisOffset,
+    const scalar reach
+) const
+{
+    // the particle's distance from the axis is at most its cell's from the
+    // z axis plus the axis' offset; the tolerance is far beyond the
+    // round-off of the particle's coordinates in its tetrahedron
+    const riser::RiserFlow& flow = carrier_.riser();
+    return
+        cellAxisDistance_.size()
+     && flow.radius() - (cellAxisDistance_[p.cell()] + axisOffset) - 0.5*p.d()
+      > reach + 1e-6*flow.diameter();
+}
+
+
+
+template<class CloudType>
 Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
 (
-    const parcelType& p
+    const parcelType& p,
+    const scalar axisOffset
 ) const
 {
     const Time& time = this->owner().mesh().time();
@@ -189,6 +264,11 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
             << flow.diameter() << " (constant/riserProperties)"
             << exit(FatalError);
     }
+    const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
+    if (clearOfWall(p, axisOffset, speed*dt))
+    {
+        return 0;
+    }
     const scalar gap = wall.distance(toCore(p.position()), t0) - 0.5*p.d();
     if (p.age() == 0 && gap <= 0)
     {
@@ -202,7 +282,6 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
             << " >= 0; release it at least d/2 from the wall"
             << exit(FatalError);
     }
-    const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
     if (gap > speed*dt)
     {
         return 0;
@@ -356,7 +435,12 @@ template<class CloudType>
 void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
 {
     checkPairsRunHere();
-    const scalar dt = this->owner().mesh().time().deltaTValue();
+    const Time& time = this->owner().mesh().time();
+    const scalar dt = time.deltaTValue();
+    preparedIndex_ = time.timeIndex();
+    checkMeshUnchanged();
+    const scalar axisOffset =
+        mag(carrier_.riser().motion().axisPosition(time.value() - dt));
 
     // this processor's particles: key, wall need
     const label nOwn = this->owner().size();
@@ -367,7 +451,7 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         for (const parcelType& p : this->owner())
         {
             ownKeys[i] = labelPair(p.origProc(), p.origId());
-            ownNeed[i] = nearWallSubCycles(p);
+            ownNeed[i] = nearWallSubCycles(p, axisOffset);
             ++i;
         }
     }
@@ -526,7 +610,12 @@ bool Foam::RiserWallContact<CloudType>::clustered(const parcelType& p) const
 template<class CloudType>
 Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
 {
-    prepareSubCycles();
+    // the riser cloud prepared the needs of the step's start (a group of
+    // them is moving now); a stock colliding cloud asks here first
+    if (preparedIndex_ != this->owner().mesh().time().timeIndex())
+    {
+        prepareSubCycles();
+    }
     label nSub = 1, nNear = 0;
     for (const parcelType& p : this->owner())
     {
@@ -1137,9 +1226,24 @@ void Foam::RiserWallContact<CloudType>::collide()
     const riser::Wall& wall = carrier_.wall();
     const scalar t = time.value();
     const scalar dt = time.deltaTValue();
+    checkMeshUnchanged();
+    const scalar axisOffset = mag(carrier_.riser().motion().axisPosition(t));
 
     for (parcelType& p : this->owner())
     {
+        // certainly apart from the wall and in no wall contact that might
+        // end now: no wall force, nothing to record
+        if
+        (
+            clearOfWall(p, axisOffset, 0)
+         && (events_.empty() || !events_.found(labelPair(p.origProc(), p.origId())))
+        )
+        {
+            p.f() = Zero;
+            p.torque() = Zero;
+            continue;
+        }
+
         // the contact force the previous sub-cycle left, on the effective
         // inertia (the start of this sub-cycle's dissipation trapezoid)
         const scalar mEff = effectiveMass(p);

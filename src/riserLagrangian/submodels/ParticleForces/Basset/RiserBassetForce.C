@@ -147,11 +147,32 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
             rhoc*d*mag(carrier_.velocity(p, td.Uc()) - p.U())/muc;
         CH = riser::bassetCoefficient
         (
-            coefficient_, Re, muc, rhoc, 0.5*d, frequency_
+            coefficient_, Re, frequency_, strouhalFactor(muc, rhoc, d)
         );
     }
     c.KH = CH*0.25*d*d*std::sqrt(constant::mathematical::pi*rhoc*muc);
     return c.KH;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserBassetForce<CloudType>::strouhalFactor
+(
+    const scalar muc,
+    const scalar rhoc,
+    const scalar d
+) const
+{
+    strouhalCache& c = lastStrouhal_;
+    if (!(muc == c.muc && rhoc == c.rhoc && d == c.d))
+    {
+        const scalar factor =
+            frequency_ > 0
+          ? riser::bassetStrouhalFactor(muc, rhoc, 0.5*d, frequency_)
+          : 0;
+        c = strouhalCache{muc, rhoc, d, factor};
+    }
+    return c.factor;
 }
 
 
@@ -245,8 +266,15 @@ void Foam::RiserBassetForce<CloudType>::startStep()
             << exit(FatalError);
     }
 
-    for (auto& p : this->owner())
+    // the next particle's history is fetched while this one's is summed
+    CloudType& cloud = this->owner();
+    for (auto iter = cloud.begin(); iter != cloud.end(); )
     {
+        auto& p = *iter;
+        if (++iter != cloud.end())
+        {
+            kernel_.prefetch(iter->history());
+        }
         if (p.historyStarted())
         {
             p.historyKnown() = kernel_.knownPart(p.history());
