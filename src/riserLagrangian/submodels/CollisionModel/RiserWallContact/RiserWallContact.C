@@ -1311,7 +1311,9 @@ void Foam::RiserWallContact<CloudType>::collide()
         e.wallVelocity = Uwall;
     }
 
-    if (pairLaw_.valid())
+    // (in the riser cloud the particles moved here are alone: those that
+    // may touch each other are sub-stepped without the mesh)
+    if (pairLaw_.valid() && !dynamic_cast<const RiserCloud<CloudType>*>(&this->owner()))
     {
         collidePairs();
     }
