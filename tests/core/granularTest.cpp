@@ -87,6 +87,25 @@ const double rhoGlass = 2800.0;
 const ElasticMaterial steel(2.0e11, 0.29);
 const double rhoSteel = 7800.0;
 
+// The scene of the hand-over tests: a glass pair that meets obliquely at
+// 0.2 m/s (approach) with 0.1 m/s sliding, over a floor at z = -0.1, with
+// gravity and rotation; third, a grain on the floor (position, velocity,
+// spin given)
+std::unique_ptr<GranularSystem> handOverScene(const HertzMindlin& l, const PlaneWall& floor)
+{
+    auto s = std::make_unique<GranularSystem>(l, l, Vector(0, 0, -9.81), true);
+    s->addWall(floor);
+    return s;
+}
+
+void addHandOverGrains(GranularSystem& s, double R, double m, const Vector& x3,
+                       const Vector& v3, const Vector& omega3)
+{
+    s.addGrain(Grain{Vector(0, 0, 0), Vector(0.1, 0.05, 0), Vector::Zero(), R, m});
+    s.addGrain(Grain{Vector(2*R, 0, 0), Vector(-0.1, -0.05, 0), Vector::Zero(), R, m});
+    s.addGrain(Grain{x3, v3, omega3, R, m});
+}
+
 } // namespace
 
 
@@ -368,20 +387,13 @@ TEST(GranularSystem, ContactStateHandedOverEqualsUninterruptedRun)
     const HertzMindlin l = law(glass, glass, 0.76, 1.0);
     const double tc = hertz(l.equivalentYoungModulus(), R/2, m/2, 0.1).duration;
     const PlaneWall floor(Vector(0, 0, -0.1), Vector(0, 0, 1));
-    auto fresh = [&]()
-    {
-        auto s = std::make_unique<GranularSystem>(l, l, Vector(0, 0, -9.81), true);
-        s->addWall(floor);
-        return s;
-    };
+    auto fresh = [&]() { return handOverScene(l, floor); };
     auto setUp = [&](GranularSystem& s)
     {
-        s.addGrain(Grain{Vector(0, 0, 0), Vector(0.1, 0.05, 0), Vector::Zero(), R, m});
-        s.addGrain(Grain{Vector(2*R, 0, 0), Vector(-0.1, -0.05, 0), Vector::Zero(), R, m});
         // resting on the floor, sliding
         // (the static overlap under gravity is 3e-8 m)
-        s.addGrain(Grain{Vector(0.05, 0, -0.1 + R - 3e-8), Vector(0.2, 0, 0),
-                         Vector::Zero(), R, m});
+        addHandOverGrains(s, R, m, Vector(0.05, 0, -0.1 + R - 3e-8), Vector(0.2, 0, 0),
+                          Vector::Zero());
     };
     // the pair touches for ~0.9 tc: handed over in its middle
     const int n = 400;
@@ -667,19 +679,12 @@ TEST(ContactEnergy, HandedOverContactsTallyAsTheUninterruptedRun)
     const HertzMindlin l = law(glass, glass, 0.76, 0.3, 0.5);
     const double tc = hertz(l.equivalentYoungModulus(), R/2, m/2, 0.1).duration;
     const PlaneWall floor(Vector(0, 0, -0.1), Vector(0, 0, 1));
-    auto fresh = [&]()
-    {
-        auto s = std::make_unique<GranularSystem>(l, l, Vector(0, 0, -9.81), true);
-        s->addWall(floor);
-        return s;
-    };
+    auto fresh = [&]() { return handOverScene(l, floor); };
     auto setUp = [&](GranularSystem& s)
     {
-        s.addGrain(Grain{Vector(0, 0, 0), Vector(0.1, 0.05, 0), Vector::Zero(), R, m});
-        s.addGrain(Grain{Vector(2*R, 0, 0), Vector(-0.1, -0.05, 0), Vector::Zero(), R, m});
         // dropped onto the floor at 0.05 m/s: touches before the hand-over
-        s.addGrain(Grain{Vector(0.05, 0, -0.1 + R + 2e-7), Vector(0.2, 0, -0.05),
-                         Vector(0, 30, 0), R, m});
+        addHandOverGrains(s, R, m, Vector(0.05, 0, -0.1 + R + 2e-7), Vector(0.2, 0, -0.05),
+                          Vector(0, 30, 0));
     };
     const int n = 400;
     const double dt = tc/n;
