@@ -98,6 +98,18 @@ std::unique_ptr<GranularSystem> handOverScene(const HertzMindlin& l, const Plane
     return s;
 }
 
+//- Hand the contact forces of one system's last evaluation to another
+void handOverForces(const GranularSystem& from, GranularSystem& to)
+{
+    std::vector<Vector> F, T;
+    for (std::size_t i = 0; i < from.grains().size(); ++i)
+    {
+        F.push_back(from.contactForce(i));
+        T.push_back(from.contactTorque(i));
+    }
+    to.setContactForces(F, T);
+}
+
 void addHandOverGrains(GranularSystem& s, double R, double m, const Vector& x3,
                        const Vector& v3, const Vector& omega3)
 {
@@ -422,13 +434,7 @@ TEST(GranularSystem, ContactStateHandedOverEqualsUninterruptedRun)
             second->setWallSpring(i, 0, first->wallSpring(i, 0));
         }
     }
-    std::vector<Vector> F, T;
-    for (std::size_t i = 0; i < 3; ++i)
-    {
-        F.push_back(first->contactForce(i));
-        T.push_back(first->contactTorque(i));
-    }
-    second->setContactForces(F, T);
+    handOverForces(*first, *second);
     for (int k = n/2; k < n; ++k) second->step(dt);
     // round-off: the summation order of the forces may differ (the Verlet
     // lists are built at other times); x ~ 0.1 m, v ~ 0.1 m/s, omega ~ 20/s
@@ -723,13 +729,7 @@ TEST(ContactEnergy, HandedOverContactsTallyAsTheUninterruptedRun)
                 second->setWallSpring(i, 0, first->wallSpring(i, 0));
             }
         }
-        std::vector<Vector> F, T;
-        for (std::size_t i = 0; i < 3; ++i)
-        {
-            F.push_back(first->contactForce(i));
-            T.push_back(first->contactTorque(i));
-        }
-        second->setContactForces(F, T);
+        handOverForces(*first, *second);
         for (int k = n/2; k < 2*n; ++k) second->step(dt);
         ASSERT_EQ(whole->pairContacts(), 0u);
         double scale = 0.0;
