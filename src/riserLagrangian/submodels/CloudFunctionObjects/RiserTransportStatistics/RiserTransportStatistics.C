@@ -18,6 +18,60 @@
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::RiserTransportStatistics<CloudType>::contactTally::add
+(
+    const scalar completed,
+    const scalar speed,
+    const label bin
+)
+{
+    contacts += completed;
+    impacts += 1;
+    speedSum += speed;
+    speedMax = max(speedMax, speed);
+    histogram[bin] += 1;
+}
+
+
+template<class CloudType>
+void Foam::RiserTransportStatistics<CloudType>::contactTally::reduceAll()
+{
+    reduce(contacts, sumOp<scalar>());
+    reduce(impacts, sumOp<scalar>());
+    reduce(speedSum, sumOp<scalar>());
+    reduce(speedMax, maxOp<scalar>());
+    reduce(energy, sumOp<scalar>());
+    Pstream::listCombineGather(histogram, plusEqOp<scalar>());
+    Pstream::listCombineScatter(histogram);
+}
+
+
+template<class CloudType>
+void Foam::RiserTransportStatistics<CloudType>::contactTally::clear()
+{
+    contacts = impacts = speedSum = speedMax = energy = 0;
+    histogram = Zero;
+}
+
+
+template<class CloudType>
+Foam::word Foam::RiserTransportStatistics<CloudType>::propertyName
+(
+    const bool pair,
+    const word& name
+)
+{
+    if (!pair)
+    {
+        return name == "energy" ? word("wallEnergy") : name;
+    }
+    std::string capitalised(name);
+    capitalised[0] = char(toupper(capitalised[0]));
+    return word("pair" + capitalised);
+}
+
+
+template<class CloudType>
 void Foam::RiserTransportStatistics<CloudType>::openFiles()
 {
     const CloudType& cloud = this->owner();
@@ -129,23 +183,22 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
 
         if (now[0] > last[0])
         {
-            contacts_ += now[0] - last[0];
-            impacts_ += 1;
-            impactSpeedSum_ += trace.wallImpactSpeed;
-            impactSpeedMax_ = max(impactSpeedMax_, trace.wallImpactSpeed);
-            impactHistogram_[speedBin(trace.wallImpactSpeed)] += 1;
+            wall_.add
+            (
+                now[0] - last[0], trace.wallImpactSpeed, speedBin(trace.wallImpactSpeed)
+            );
         }
         if (now[1] > last[1])
         {
             // each contact is completed by both its parcels
-            pairContacts_ += 0.5*(now[1] - last[1]);
-            pairImpacts_ += 1;
-            pairImpactSpeedSum_ += trace.pairImpactSpeed;
-            pairImpactSpeedMax_ = max(pairImpactSpeedMax_, trace.pairImpactSpeed);
-            pairImpactHistogram_[speedBin(trace.pairImpactSpeed)] += 1;
+            pair_.add
+            (
+                0.5*(now[1] - last[1]), trace.pairImpactSpeed,
+                speedBin(trace.pairImpactSpeed)
+            );
         }
-        wallEnergy_ += p.nParticle()*(now[2] - last[2]);
-        pairEnergy_ += p.nParticle()*(now[3] - last[3]);
+        wall_.energy += p.nParticle()*(now[2] - last[2]);
+        pair_.energy += p.nParticle()*(now[3] - last[3]);
         states.insert(key, now);
     }
     traces_.transfer(states);
@@ -228,18 +281,8 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     reduce(URel, sumOp<vector>());
     reduce(slip, sumOp<vector>());
     Pstream::listCombineGather(radialVolume, plusEqOp<scalar>());
-    reduce(contacts_, sumOp<scalar>());
-    reduce(impacts_, sumOp<scalar>());
-    reduce(impactSpeedSum_, sumOp<scalar>());
-    reduce(impactSpeedMax_, maxOp<scalar>());
-    Pstream::listCombineGather(impactHistogram_, plusEqOp<scalar>());
-    reduce(wallEnergy_, sumOp<scalar>());
-    reduce(pairContacts_, sumOp<scalar>());
-    reduce(pairImpacts_, sumOp<scalar>());
-    reduce(pairImpactSpeedSum_, sumOp<scalar>());
-    reduce(pairImpactSpeedMax_, maxOp<scalar>());
-    Pstream::listCombineGather(pairImpactHistogram_, plusEqOp<scalar>());
-    reduce(pairEnergy_, sumOp<scalar>());
+    wall_.reduceAll();
+    pair_.reduceAll();
 
     if (Pstream::master())
     {
@@ -253,23 +296,22 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         row.liftingEfficiency =
             flow.centreLineSpeed() > 0 ? row.URel.z()/flow.centreLineSpeed() : nan;
         row.massFlux = axialMomentum/length_/area;
-        row.contacts = contacts_;
+        const scalar interval = t - lastSample_;
+        row.contacts = wall_.contacts;
         row.contactRate =
-            parcels > 0 && t > lastSample_ ? contacts_/(t - lastSample_)/parcels : 0;
-        row.impacts = impacts_;
-        row.impactSpeedMean = impacts_ > 0 ? impactSpeedSum_/impacts_ : nan;
-        row.impactSpeedMax = impacts_ > 0 ? impactSpeedMax_ : nan;
-        row.wallEnergy = wallEnergy_;
-        row.pairContacts = pairContacts_;
+            parcels > 0 && interval > 0 ? wall_.contacts/interval/parcels : 0;
+        row.impacts = wall_.impacts;
+        row.impactSpeedMean = wall_.impacts > 0 ? wall_.speedSum/wall_.impacts : nan;
+        row.impactSpeedMax = wall_.impacts > 0 ? wall_.speedMax : nan;
+        row.wallEnergy = wall_.energy;
+        row.pairContacts = pair_.contacts;
         row.pairContactRate =
-            parcels > 0 && t > lastSample_
-          ? 2*pairContacts_/(t - lastSample_)/parcels
-          : 0;
-        row.pairImpacts = pairImpacts_;
+            parcels > 0 && interval > 0 ? 2*pair_.contacts/interval/parcels : 0;
+        row.pairImpacts = pair_.impacts;
         row.pairImpactSpeedMean =
-            pairImpacts_ > 0 ? pairImpactSpeedSum_/pairImpacts_ : nan;
-        row.pairImpactSpeedMax = pairImpacts_ > 0 ? pairImpactSpeedMax_ : nan;
-        row.pairEnergy = pairEnergy_;
+            pair_.impacts > 0 ? pair_.speedSum/pair_.impacts : nan;
+        row.pairImpactSpeedMax = pair_.impacts > 0 ? pair_.speedMax : nan;
+        row.pairEnergy = pair_.energy;
         row.blockedBins = blockedBins;
         row.blockedTime = blockedTime_;
         riser::writeStatisticsRow
@@ -286,24 +328,14 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         };
         writeProfile(radialFile_(), radialVolume/(area*length_/radialBins_));
         writeProfile(axialFile_(), axialVolume/(area*length_/axialBins_));
-        writeProfile(impactFile_(), impactHistogram_);
-        writeProfile(pairImpactFile_(), pairImpactHistogram_);
+        writeProfile(impactFile_(), wall_.histogram);
+        writeProfile(pairImpactFile_(), pair_.histogram);
         transportFile_().flush();
     }
 
     lastSample_ = t;
-    contacts_ = 0;
-    impacts_ = 0;
-    impactSpeedSum_ = 0;
-    impactSpeedMax_ = 0;
-    impactHistogram_ = Zero;
-    wallEnergy_ = 0;
-    pairContacts_ = 0;
-    pairImpacts_ = 0;
-    pairImpactSpeedSum_ = 0;
-    pairImpactSpeedMax_ = 0;
-    pairImpactHistogram_ = Zero;
-    pairEnergy_ = 0;
+    wall_.clear();
+    pair_.clear();
 }
 
 
@@ -345,10 +377,10 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     ),
     z0_(boundBox(owner.mesh().points()).min().z()),
     length_(boundBox(owner.mesh().points()).span().z()),
-    lastSample_(owner.time().startTime().value()),
-    impactHistogram_(impactSpeedBins_, Zero),
-    pairImpactHistogram_(impactSpeedBins_, Zero)
+    lastSample_(owner.time().startTime().value())
 {
+    wall_.histogram.setSize(impactSpeedBins_, Zero);
+    pair_.histogram.setSize(impactSpeedBins_, Zero);
     checkedEntry::allowedKeys
     (
         this->coeffDict(),
@@ -364,28 +396,25 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     this->getModelProperty("blockedTime", blockedTime_);
     if (Pstream::master())
     {
-        this->getModelProperty("contacts", contacts_);
-        this->getModelProperty("impacts", impacts_);
-        this->getModelProperty("impactSpeedSum", impactSpeedSum_);
-        this->getModelProperty("impactSpeedMax", impactSpeedMax_);
-        scalarList histogram;
-        this->getModelProperty("impactHistogram", histogram);
-        if (histogram.size() == impactSpeedBins_)
+        for (const bool pair : {false, true})
         {
-            impactHistogram_ = histogram;
+            contactTally& tally = pair ? pair_ : wall_;
+            const auto get = [&](const word& name, auto& value)
+            {
+                this->getModelProperty(propertyName(pair, name), value);
+            };
+            get("contacts", tally.contacts);
+            get("impacts", tally.impacts);
+            get("impactSpeedSum", tally.speedSum);
+            get("impactSpeedMax", tally.speedMax);
+            scalarList histogram;
+            get("impactHistogram", histogram);
+            if (histogram.size() == impactSpeedBins_)
+            {
+                tally.histogram = histogram;
+            }
+            get("energy", tally.energy);
         }
-        this->getModelProperty("wallEnergy", wallEnergy_);
-        this->getModelProperty("pairContacts", pairContacts_);
-        this->getModelProperty("pairImpacts", pairImpacts_);
-        this->getModelProperty("pairImpactSpeedSum", pairImpactSpeedSum_);
-        this->getModelProperty("pairImpactSpeedMax", pairImpactSpeedMax_);
-        scalarList pairHistogram;
-        this->getModelProperty("pairImpactHistogram", pairHistogram);
-        if (pairHistogram.size() == impactSpeedBins_)
-        {
-            pairImpactHistogram_ = pairHistogram;
-        }
-        this->getModelProperty("pairEnergy", pairEnergy_);
 
         // opened now: a restart after which no sample is taken must not
         // keep the rows after its start
@@ -413,18 +442,8 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     traces_(s.traces_),
     started_(s.started_),
     lastSample_(s.lastSample_),
-    contacts_(s.contacts_),
-    impacts_(s.impacts_),
-    impactSpeedSum_(s.impactSpeedSum_),
-    impactSpeedMax_(s.impactSpeedMax_),
-    impactHistogram_(s.impactHistogram_),
-    wallEnergy_(s.wallEnergy_),
-    pairContacts_(s.pairContacts_),
-    pairImpacts_(s.pairImpacts_),
-    pairImpactSpeedSum_(s.pairImpactSpeedSum_),
-    pairImpactSpeedMax_(s.pairImpactSpeedMax_),
-    pairImpactHistogram_(s.pairImpactHistogram_),
-    pairEnergy_(s.pairEnergy_),
+    wall_(s.wall_),
+    pair_(s.pair_),
     blockedTime_(s.blockedTime_)
 {}
 
@@ -486,63 +505,27 @@ template<class CloudType>
 void Foam::RiserTransportStatistics<CloudType>::write()
 {
     // the processors' counts summed, kept by the master
-    scalar contacts = contacts_, impacts = impacts_;
-    scalar speedSum = impactSpeedSum_, speedMax = impactSpeedMax_;
-    scalarList histogram(impactHistogram_);
-    reduce(contacts, sumOp<scalar>());
-    reduce(impacts, sumOp<scalar>());
-    reduce(speedSum, sumOp<scalar>());
-    reduce(speedMax, maxOp<scalar>());
-    Pstream::listCombineGather(histogram, plusEqOp<scalar>());
-    Pstream::listCombineScatter(histogram);
-    scalar wallEnergy = wallEnergy_, pairContacts = pairContacts_;
-    scalar pairImpacts = pairImpacts_, pairSpeedSum = pairImpactSpeedSum_;
-    scalar pairSpeedMax = pairImpactSpeedMax_, pairEnergy = pairEnergy_;
-    scalarList pairHistogram(pairImpactHistogram_);
-    reduce(wallEnergy, sumOp<scalar>());
-    reduce(pairContacts, sumOp<scalar>());
-    reduce(pairImpacts, sumOp<scalar>());
-    reduce(pairSpeedSum, sumOp<scalar>());
-    reduce(pairSpeedMax, maxOp<scalar>());
-    reduce(pairEnergy, sumOp<scalar>());
-    Pstream::listCombineGather(pairHistogram, plusEqOp<scalar>());
-    Pstream::listCombineScatter(pairHistogram);
-
     this->setModelProperty("lastSample", lastSample_);
     this->setModelProperty("blockedTime", blockedTime_);
-    this->setModelProperty("contacts", contacts);
-    this->setModelProperty("impacts", impacts);
-    this->setModelProperty("impactSpeedSum", speedSum);
-    this->setModelProperty("impactSpeedMax", speedMax);
-    this->setModelProperty("impactHistogram", histogram);
-    this->setModelProperty("wallEnergy", wallEnergy);
-    this->setModelProperty("pairContacts", pairContacts);
-    this->setModelProperty("pairImpacts", pairImpacts);
-    this->setModelProperty("pairImpactSpeedSum", pairSpeedSum);
-    this->setModelProperty("pairImpactSpeedMax", pairSpeedMax);
-    this->setModelProperty("pairImpactHistogram", pairHistogram);
-    this->setModelProperty("pairEnergy", pairEnergy);
-
-    if (!Pstream::master())
+    for (const bool pair : {false, true})
     {
-        contacts = impacts = speedSum = speedMax = 0;
-        histogram = Zero;
-        wallEnergy = pairContacts = pairImpacts = pairSpeedSum = 0;
-        pairSpeedMax = pairEnergy = 0;
-        pairHistogram = Zero;
+        contactTally& tally = pair ? pair_ : wall_;
+        tally.reduceAll();
+        const auto set = [&](const word& name, const auto& value)
+        {
+            this->setModelProperty(propertyName(pair, name), value);
+        };
+        set("contacts", tally.contacts);
+        set("impacts", tally.impacts);
+        set("impactSpeedSum", tally.speedSum);
+        set("impactSpeedMax", tally.speedMax);
+        set("impactHistogram", tally.histogram);
+        set("energy", tally.energy);
+        if (!Pstream::master())
+        {
+            tally.clear();
+        }
     }
-    contacts_ = contacts;
-    impacts_ = impacts;
-    impactSpeedSum_ = speedSum;
-    impactSpeedMax_ = speedMax;
-    impactHistogram_ = histogram;
-    wallEnergy_ = wallEnergy;
-    pairContacts_ = pairContacts;
-    pairImpacts_ = pairImpacts;
-    pairImpactSpeedSum_ = pairSpeedSum;
-    pairImpactSpeedMax_ = pairSpeedMax;
-    pairImpactHistogram_ = pairHistogram;
-    pairEnergy_ = pairEnergy;
 }
 
 
