@@ -396,19 +396,6 @@ namespace Foam
         Pstream::scatterList(all);
         return ListListOps::combine<List<T>>(all, accessOp<List<T>>());
     }
-
-    //- The order that sorts keys (origProc, origId)
-    inline std::vector<label> keyOrder(const UList<labelPair>& keys)
-    {
-        std::vector<label> order(keys.size());
-        std::iota(order.begin(), order.end(), label(0));
-        std::sort
-        (
-            order.begin(), order.end(),
-            [&keys](label a, label b) { return keys[a] < keys[b]; }
-        );
-        return order;
-    }
 }
 
 
@@ -484,24 +471,22 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
             ++i;
         }
     }
+    // (in the same order on every processor: processor by processor)
     const List<labelPair> allKeys = gatheredFromAll(ownKeys);
-    const std::vector<label> order = keyOrder(allKeys);
     const List<vector> allX = gatheredFromAll(ownX), allU = gatheredFromAll(ownU);
     const List<scalar> allD = gatheredFromAll(ownD), allM = gatheredFromAll(ownM);
     const labelList allNeed = gatheredFromAll(ownNeed);
     const labelList allNew = gatheredFromAll(ownNew);
-    const std::size_t n = order.size();
+    const std::size_t n = allKeys.size();
 
     std::vector<riser::Vector> x(n);
-    std::vector<label> need(n);
+    std::vector<label> need(allNeed.begin(), allNeed.end());
     scalar rMax = 0, uMax = 0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        const label k = order[i];
-        x[i] = toCore(allX[k]);
-        need[i] = allNeed[k];
-        rMax = max(rMax, 0.5*allD[k]);
-        uMax = max(uMax, mag(allU[k]));
+        x[i] = toCore(allX[i]);
+        rMax = max(rMax, 0.5*allD[i]);
+        uMax = max(uMax, mag(allU[i]));
     }
 
     // clusters of particles that may touch within the step: union-find
@@ -523,7 +508,7 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     const scalar reach = 4*uMax*dt;
     forEachNearPair(x, 2*rMax + reach + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
     {
-        const label p = order[i], q = order[j];
+        const label p = i, q = j;
         const scalar gap =
             (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(allD[p] + allD[q]);
         if (gap > reach)
@@ -570,7 +555,7 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     {
         needs_.set
         (
-            allKeys[order[i]],
+            allKeys[i],
             subCycleNeed{clusterNeed[find(i)], clusterSize[find(i)] > 1}
         );
     }
