@@ -19,15 +19,20 @@
 // the current tangent plane (its length kept) and then grows by U_t dt; the
 // law caps it.
 //
-// Beside gravity each grain may carry an acceleration of its own, constant
-// over the steps (e.g. the fluid's, frozen over a flow step while the
-// contacts are sub-stepped). A section may be periodic along z (length L
+// Beside gravity each grain may carry an acceleration of its own, linear in
+// its velocity with constant coefficients (e.g. the fluid's, linearised and
+// frozen over a flow step while the contacts are sub-stepped: the drag then
+// turns with the velocity in a rebound). Its velocity term is taken at the
+// velocity before the first half kick and after the second (the trapezoid
+// rule: second order, and the first half kick keeps drag dt <= 1). A section may be periodic along z (length L
 // from z0): grains touch across its ends through their images, and the
 // positions are not wrapped (a caller wraps them, or tracks the particles
 // through its periodic mesh). The contact state can be set before the first
 // step and read after any (the springs of pairs and of walls), so that a
 // caller holding contacts of its own (particles of a CFD cloud) can hand
-// them over and take them back.
+// them over and take them back. Either kind of contact may be left out (no
+// law for it): without a pair law the grains pass through each other and
+// no pair is searched for; without a wall law no wall may be added.
 //
 // Energy dissipated in contacts, measured as the work of each contact's
 // force on the contact's relative motion. Over a step h, with F_0 and F_1
@@ -80,14 +85,19 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
+#include <optional>
+#include <stdexcept>
 #include <unordered_map>
 #include <vector>
 
 namespace riser {
 
 //- One sphere: position, velocity, angular velocity, radius, mass; an
-//  acceleration of its own beside gravity (default none) and its moment of
-//  inertia (default 0: a solid sphere of its mass, 2/5 m R^2)
+//  acceleration of its own beside gravity, accel + drag (carrierVelocity -
+//  v), linear in its velocity v (default none: a fluid's acceleration
+//  linearised about the grain's state, its drag rate [1/s] towards the
+//  carrier's velocity frozen with the rest), and its moment of inertia
+//  (default 0: a solid sphere of its mass, 2/5 m R^2)
 struct Grain
 {
     Vector x;
@@ -97,6 +107,8 @@ struct Grain
     double mass;
     Vector accel = Vector::Zero();
     double inertia = 0.0;
+    double drag = 0.0;
+    Vector carrierVelocity = Vector::Zero();
 };
 
 //- A grain's contact with a wall at the last force evaluation
@@ -132,14 +144,17 @@ struct PairContactState
 class GranularSystem
 {
 public:
-    //- pairLaw: the law between two grains (both materials the grains');
-    //  wallLaw: between a grain and any wall; g: gravity; skin: the Verlet
-    //  list's margin as a fraction of the largest radius (cost only: any
-    //  skin > 0 finds every contact)
-    GranularSystem(const HertzMindlin& pairLaw, const HertzMindlin& wallLaw,
+    //- pairLaw: the law between two grains (both materials the grains'),
+    //  std::nullopt for none; wallLaw: between a grain and any wall,
+    //  std::nullopt for none; g: gravity; skin: the Verlet list's margin as
+    //  a fraction of the largest radius (cost only: any skin > 0 finds every
+    //  contact)
+    GranularSystem(std::optional<HertzMindlin> pairLaw,
+                   std::optional<HertzMindlin> wallLaw,
                    const Vector& g, bool rotation, double skin = 0.4)
     :
-        pairLaw_(pairLaw), wallLaw_(wallLaw), g_(g), rotation_(rotation), skin_(skin)
+        pairLaw_(std::move(pairLaw)), wallLaw_(std::move(wallLaw)), g_(g),
+        rotation_(rotation), skin_(skin)
     {
         requirePositive("riser::GranularSystem", "skin", skin);
     }
@@ -147,6 +162,13 @@ public:
     //- A wall the grains touch; the caller keeps it alive
     void addWall(const Wall& w)
     {
+        if (!wallLaw_)
+        {
+            throw std::invalid_argument
+            (
+                "riser::GranularSystem: a wall added to a system without a wall law"
+            );
+        }
         walls_.push_back(&w);
         wallSlots_.assign(grains_.size()*walls_.size(), WallSlot());
         forcesValid_ = false;
@@ -203,6 +225,13 @@ public:
     {
         checkIndex(i);
         checkIndex(j);
+        if (!pairLaw_)
+        {
+            throw std::invalid_argument
+            (
+                "riser::GranularSystem: a pair contact handed to a system without a pair law"
+            );
+        }
         PairContactState k = c;
         if (j < i)
         {
@@ -311,6 +340,11 @@ public:
     void step(double dt)
     {
         requirePositive("riser::GranularSystem::step", "dt", dt);
+        for (const Grain& p : grains_)
+        {
+            requireInRange("riser::GranularSystem::step", "drag dt", p.drag*dt,
+                           0.0, Bound::closed, 1.0, Bound::closed);
+        }
         if (!forcesValid_)
         {
             computeForces(0.0);
@@ -320,11 +354,11 @@ public:
             completeHandedOver();
         }
         handedOver_ = false;
-        kick(0.5*dt);
+        kick(0.5*dt, false);
         for (Grain& p : grains_) p.x += dt*p.v;
         t_ += dt;
         computeForces(dt);
-        kick(0.5*dt);
+        kick(0.5*dt, true);
     }
 
     //- Pairs and grain-wall contacts in contact now
@@ -433,12 +467,27 @@ private:
         return l > 0.0 ? Vector(st*(s.norm()/l)) : Vector(Vector::Zero());
     }
 
-    void kick(double h)
+    //- The half kicks of velocity Verlet; the own acceleration's drag is
+    //  taken at the velocity before the first (explicit) and after the
+    //  second (implicit): the trapezoid rule over the step, second order
+    void kick(double h, bool second)
     {
         for (std::size_t i = 0; i < grains_.size(); ++i)
         {
             Grain& p = grains_[i];
-            p.v += h*(force_[i]/p.mass + g_ + p.accel);
+            const Vector a = force_[i]/p.mass + g_ + p.accel;
+            if (p.drag == 0.0)
+            {
+                p.v += h*a;
+            }
+            else if (second)
+            {
+                p.v = (p.v + h*(a + p.drag*p.carrierVelocity))/(1.0 + h*p.drag);
+            }
+            else
+            {
+                p.v += h*(a + p.drag*(p.carrierVelocity - p.v));
+            }
             if (rotation_) p.omega += h*torque_[i]/inertia(p);
         }
         wallImpulse_ += h*wallForce_;
@@ -506,7 +555,7 @@ private:
             if (std::isnan(c.approachSpeed)) c.approachSpeed = U.dot(geo.normal);
             if (!c.forceKnown)
             {
-                const ContactForce f = pairLaw_.force
+                const ContactForce f = pairLaw_->force
                 (
                     pairBody(a.radius, a.mass, b.radius, b.mass), geo.overlap,
                     geo.normal, U, turned(c.spring, geo.normal)
@@ -528,7 +577,7 @@ private:
                 slot.state.wallVelocity = cp.velocity;
                 if (!slot.forceKnown)
                 {
-                    const ContactForce f = wallLaw_.force
+                    const ContactForce f = wallLaw_->force
                     (
                         ContactBody(p.radius, p.mass), cp.overlap, cp.normal,
                         wallContactVelocity(p, cp.normal, cp.velocity),
@@ -555,6 +604,9 @@ private:
             rMax = std::max(rMax, grains_[i].radius);
         }
         skinLength_ = skin_*rMax;
+        listValid_ = true;
+        ++builds_;
+        if (!pairLaw_) return;  // no pair contact: no pairs to list
         const double cutoff = 2.0*rMax + skinLength_;
         // the contacts in progress (those handed over not yet evaluated)
         std::unordered_map<std::uint64_t, Candidate> kept;
@@ -628,8 +680,6 @@ private:
                 list_.push_back(c);
             }
         });
-        listValid_ = true;
-        ++builds_;
     }
 
     //- Has some grain moved more than skin/2 since the list was built?
@@ -700,7 +750,7 @@ private:
             const Vector Ut = U - U.dot(geo.normal)*geo.normal;
             const Vector spring = turned(cand.spring, geo.normal) + dt*Ut;
             const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
-            const ContactForce c = pairLaw_.force(body, geo.overlap, geo.normal, U, spring);
+            const ContactForce c = pairLaw_->force(body, geo.overlap, geo.normal, U, spring);
             const Vector F = c.normal + c.tangential;
             force_[cand.i] += F;
             force_[cand.j] -= F;
@@ -716,7 +766,7 @@ private:
             cand.normal = geo.normal;
             cand.handedOver = false;
             ++pairsTouching_;
-            elastic_ += energyOf(body, geo.overlap, c.springAfter, pairLaw_);
+            elastic_ += energyOf(body, geo.overlap, c.springAfter, *pairLaw_);
             largestPairOverlap_ = std::max
             (
                 largestPairOverlap_, geo.overlap/(2.0*std::min(a.radius, b.radius))
@@ -752,7 +802,7 @@ private:
                 const Vector Ut = U - U.dot(cp.normal)*cp.normal;
                 const Vector spring = turned(slot.spring, cp.normal) + dt*Ut;
                 const ContactBody body(p.radius, p.mass);
-                const ContactForce c = wallLaw_.force(body, cp.overlap, cp.normal, U, spring);
+                const ContactForce c = wallLaw_->force(body, cp.overlap, cp.normal, U, spring);
                 const Vector F = c.normal + c.tangential;
                 force_[i] += F;
                 wallForce_ += F;
@@ -766,7 +816,7 @@ private:
                 };
                 slot.handedOver = false;
                 ++wallsTouching_;
-                elastic_ += energyOf(body, cp.overlap, c.springAfter, wallLaw_);
+                elastic_ += energyOf(body, cp.overlap, c.springAfter, *wallLaw_);
             }
         }
         forcesValid_ = true;
@@ -793,7 +843,7 @@ private:
              + 0.5*kt*spring.squaredNorm();
     }
 
-    HertzMindlin pairLaw_, wallLaw_;
+    std::optional<HertzMindlin> pairLaw_, wallLaw_;
     Vector g_;
     bool rotation_;
     std::vector<const Wall*> walls_;

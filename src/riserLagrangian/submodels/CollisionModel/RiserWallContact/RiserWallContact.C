@@ -21,13 +21,21 @@
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
-riser::HertzMindlin Foam::RiserWallContact<CloudType>::readLaw() const
+Foam::autoPtr<riser::HertzMindlin>
+Foam::RiserWallContact<CloudType>::readWallLaw() const
 {
-    return riser::HertzMindlin
+    if (!modelEntries::wallContactOn(this->coeffDict()))
+    {
+        return nullptr;
+    }
+    return autoPtr<riser::HertzMindlin>
     (
-        modelEntries::contactParameters
+        new riser::HertzMindlin
         (
-            this->coeffDict(), this->owner().constProps().dict()
+            modelEntries::contactParameters
+            (
+                this->coeffDict(), this->owner().constProps().dict()
+            )
         )
     );
 }
@@ -103,7 +111,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 :
     CollisionModel<CloudType>(dict, owner, typeName),
     carrier_(carrierFlow::New(owner.U())),
-    law_(readLaw()),
+    wallLaw_(readWallLaw()),
     rotation_(this->coeffDict().lookupOrDefault("rotation", Switch(false))),
     stepsPerContact_
     (
@@ -112,6 +120,14 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     maxSubCycles_
     (
         checkedEntry::count(this->coeffDict(), "maxSubCycles", 1, 100000000, 100000)
+    ),
+    aloneMeshFree_
+    (
+        this->coeffDict().found("aloneAtWall")
+     && checkedEntry::choice<bool>
+        (
+            this->coeffDict(), "aloneAtWall", {{"tracked", false}, {"meshFree", true}}
+        )
     ),
     addedMassCoeff_(readAddedMassCoeff()),
     pairOverlapMax_(0),
@@ -138,8 +154,20 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     // the riser must exist: FatalError here rather than at the first step
     carrier_.riser();
 
-    Info<< "    riserWallContact: normal damping ratio "
-        << law_.normalDampingRatio() << ", rotation " << rotation_
+    Info<< "    riserWallContact: wall contact ";
+    if (wallLaw_.valid())
+    {
+        Info<< "(normal damping ratio " << wallLaw_->normalDampingRatio()
+            << ", particles alone at the wall "
+            << (aloneMeshFree_ ? "sub-stepped without the mesh" : "tracked")
+            << ")";
+    }
+    else
+    {
+        Info<< "off";
+    }
+    Info<< ", pair contact " << (pairLaw_.valid() ? "on" : "off")
+        << ", rotation " << rotation_
         << ", inertia m_p + " << addedMassCoeff_ << " m_f" << endl;
     // the contact table is opened (and, on a restart, continued up to the
     // start time) now, not at the first completed contact: a restart after
@@ -156,10 +184,11 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 :
     CollisionModel<CloudType>(cm),
     carrier_(cm.carrier_),
-    law_(cm.law_),
+    wallLaw_(cm.wallLaw_.valid() ? new riser::HertzMindlin(cm.wallLaw_()) : nullptr),
     rotation_(cm.rotation_),
     stepsPerContact_(cm.stepsPerContact_),
     maxSubCycles_(cm.maxSubCycles_),
+    aloneMeshFree_(cm.aloneMeshFree_),
     addedMassCoeff_(cm.addedMassCoeff_),
     pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
     needs_(cm.needs_),
@@ -265,7 +294,7 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
             << exit(FatalError);
     }
     const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
-    if (clearOfWall(p, axisOffset, speed*dt))
+    if (!wallLaw_.valid() || clearOfWall(p, axisOffset, speed*dt))
     {
         return 0;
     }
@@ -287,7 +316,7 @@ Foam::label Foam::RiserWallContact<CloudType>::nearWallSubCycles
         return 0;
     }
     const riser::ContactBody body(0.5*p.d(), effectiveMass(p));
-    const scalar tc = law_.contactTime(body, max(speed, SMALL));
+    const scalar tc = wallLaw_->contactTime(body, max(speed, SMALL));
     // as a scalar first: no overflow of the label
     const scalar needed = ceil(stepsPerContact_*dt/tc);
     checkNeeded
@@ -447,7 +476,11 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     {
         forAll(ownKeys, i)
         {
-            needs_.set(ownKeys[i], subCycleNeed{ownNeed[i], false});
+            needs_.set
+            (
+                ownKeys[i],
+                subCycleNeed{ownNeed[i], aloneMeshFree_ && ownNeed[i] > 0}
+            );
         }
         return;
     }
@@ -553,10 +586,15 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     // (every processor keeps the needs of all: the gathered lists hold them)
     for (std::size_t i = 0; i < n; ++i)
     {
+        const label k = find(i);
         needs_.set
         (
             allKeys[i],
-            subCycleNeed{clusterNeed[find(i)], clusterSize[find(i)] > 1}
+            subCycleNeed
+            {
+                clusterNeed[k],
+                clusterSize[k] > 1 || (aloneMeshFree_ && clusterNeed[k] > 0)
+            }
         );
     }
 }
@@ -586,9 +624,9 @@ Foam::label Foam::RiserWallContact<CloudType>::subCycles(const parcelType& p) co
 
 
 template<class CloudType>
-bool Foam::RiserWallContact<CloudType>::clustered(const parcelType& p) const
+bool Foam::RiserWallContact<CloudType>::meshFree(const parcelType& p) const
 {
-    return need(p).clustered;
+    return need(p).meshFree;
 }
 
 
@@ -868,27 +906,23 @@ Foam::contactSteps
 Foam::RiserWallContact<CloudType>::meshFreeContacts
 (
     const UList<parcelType*>& parcels,
-    const UList<vector>& fluidAcceleration,
-    const label nSub
+    const UList<linearisedAcceleration>& fluidAcceleration,
+    const label nSubNeeded
 )
 {
     const Time& time = this->owner().mesh().time();
     const riser::Wall& wall = carrier_.wall();
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
-    const scalar h = dt/max(nSub, label(1));
     const label nOwn = parcels.size();
-    if (!pairLaw_.valid())
-    {
-        FatalErrorInFunction
-            << "clustered particles without pair contact" << exit(FatalError);
-    }
+    const bool walls = wallLaw_.valid();
 
     // this processor's particles at the step's start: state, springs
     // (pair records flattened: owner, other, spring) and contact forces
     List<labelPair> keys(nOwn);
-    List<vector> x(nOwn), U(nOwn), omega(nOwn), a(nOwn), F(nOwn), T(nOwn), wallSpring(nOwn);
-    List<scalar> R(nOwn), mEff(nOwn), mP(nOwn), inertia(nOwn);
+    List<vector> x(nOwn), U(nOwn), omega(nOwn), a(nOwn), Uc(nOwn), F(nOwn), T(nOwn),
+        wallSpring(nOwn);
+    List<scalar> R(nOwn), mEff(nOwn), mP(nOwn), inertia(nOwn), drag(nOwn);
     labelList touchingWall(nOwn, 0);
     DynamicList<labelPair> recordOwner, recordOther;
     DynamicList<vector> recordSpring;
@@ -899,7 +933,9 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         x[i] = p.position();
         U[i] = p.U();
         omega[i] = rotation_ ? p.omega() : vector::zero;
-        a[i] = fluidAcceleration[i];
+        a[i] = fluidAcceleration[i].a0;
+        drag[i] = fluidAcceleration[i].rate;
+        Uc[i] = fluidAcceleration[i].Uc;
         R[i] = 0.5*p.d();
         mEff[i] = effectiveMass(p);
         mP[i] = p.mass();
@@ -946,6 +982,8 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         }
     );
     const List<vector> allOmega = gatheredFromAll(omega), allA = gatheredFromAll(a);
+    const List<vector> allUc = gatheredFromAll(Uc);
+    const List<scalar> allDrag = gatheredFromAll(drag);
     const List<vector> allF = gatheredFromAll(F), allT = gatheredFromAll(T);
     const List<vector> allWallSpring = gatheredFromAll(wallSpring);
     const List<scalar> allR = gatheredFromAll(R), allM = gatheredFromAll(mEff);
@@ -957,13 +995,39 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     const List<vector> allRecordSpring = gatheredFromAll(recordSpring);
     const std::size_t n = order.size();
 
-    riser::GranularSystem grains(pairLaw_(), law_, riser::Vector::Zero(), rotation_);
-    grains.addWall(wall);
+    auto optionalLaw = [](const autoPtr<riser::HertzMindlin>& law)
+    {
+        return
+            law.valid()
+          ? std::optional<riser::HertzMindlin>(law())
+          : std::optional<riser::HertzMindlin>();
+    };
+    riser::GranularSystem grains
+    (
+        optionalLaw(pairLaw_), optionalLaw(wallLaw_), riser::Vector::Zero(),
+        rotation_
+    );
+    if (walls)
+    {
+        grains.addWall(wall);
+    }
     if (section_.periodic)
     {
         grains.setPeriodic(section_.z0, section_.length);
     }
     grains.setTime(t0);
+    // the same grains without contacts: their free motion under the fluid
+    // acceleration, integrated alike (a grain that touches nothing moves
+    // exactly as its free one)
+    riser::GranularSystem free(std::nullopt, std::nullopt, riser::Vector::Zero(), rotation_);
+    // the explicit drag of the sub-steps stays stable: drag h <= 1 (the same
+    // on every processor: the gathered rates)
+    label nSub = max(nSubNeeded, label(1));
+    for (const scalar rate : allDrag)
+    {
+        nSub = max(nSub, label(ceil(rate*dt)));
+    }
+    const scalar h = dt/nSub;
     HashTable<label, labelPair, labelPair::Hash<>> grainOf(2*n);
     std::vector<riser::Vector> grainF(n), grainT(n);
     for (std::size_t i = 0; i < n; ++i)
@@ -975,14 +1039,17 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
             toCore(allX[k]), toCore(allU[k]), toCore(allOmega[k]), allR[k], allM[k]
         };
         g.accel = toCore(allA[k]);
+        g.drag = allDrag[k];
+        g.carrierVelocity = toCore(allUc[k]);
         g.inertia = allInertia[k];
         grains.addGrain(g);
+        free.addGrain(g);
         grainF[i] = toCore(allF[k]);
         grainT[i] = toCore(allT[k]);
     }
     for (std::size_t i = 0; i < n; ++i)
     {
-        if (allTouchingWall[order[i]])
+        if (walls && allTouchingWall[order[i]])
         {
             // with the force of its last evaluation, when this processor
             // kept it (its own particles: for their dissipation tally)
@@ -1034,10 +1101,15 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     for (label k = 1; k <= nSub; ++k)
     {
         grains.step(h);
+        free.step(h);
         const scalar t = t0 + k*h;
         pairOverlapMax_ = max(pairOverlapMax_, grains.largestPairOverlap());
         forAll(parcels, i)
         {
+            if (!walls)
+            {
+                break;
+            }
             const riser::WallContactState& c = grains.wallContact(ownGrain[i], 0);
             if (!c.touching && !inContact[i])
             {
@@ -1081,6 +1153,10 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
                 *parcels[i], label(grains.pairContactsCompleted(gi)),
                 grains.pairImpactSpeed(gi), grains.pairEnergy(gi)
             );
+            if (!walls)
+            {
+                continue;
+            }
             const riser::WallContactState& c = grains.wallContact(gi, 0);
             auto e = events_.find(keys[i]);
             if (c.touching && e.found())
@@ -1138,10 +1214,11 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     {
         const label k = order[i];
         const riser::Grain& g = grains.grains()[i];
+        const riser::Grain& gFree = free.grains()[i];
         contactStep c;
-        c.dx = fromCore(g.x) - allX[k] - dt*allU[k] - (0.5*dt*dt)*allA[k];
-        c.dU = fromCore(g.v) - allU[k] - dt*allA[k];
-        c.dL = allInertia[k]*(fromCore(g.omega) - allOmega[k]);
+        c.dx = fromCore(riser::Vector(g.x - gFree.x));
+        c.dU = fromCore(riser::Vector(g.v - gFree.v));
+        c.dL = allInertia[k]*fromCore(riser::Vector(g.omega - gFree.omega));
         c.f = (allMp[k]/allM[k])*fromCore(grains.contactForce(i));
         c.torque = rotation_ ? fromCore(grains.contactTorque(i)) : vector::zero;
         result.insert(allKeys[k], c);
@@ -1155,7 +1232,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         const riser::Grain& g = grains.grains()[gi];
         p.collisionRecords() =
             typename std::decay<decltype(p.collisionRecords())>::type();
-        if (grains.wallContact(gi, 0).touching)
+        if (walls && grains.wallContact(gi, 0).touching)
         {
             const riser::ContactPoint cp =
                 wall.contactPoint(g.x, g.radius, time.value());
@@ -1216,12 +1293,15 @@ void Foam::RiserWallContact<CloudType>::collide()
 
     for (parcelType& p : this->owner())
     {
-        // certainly apart from the wall and in no wall contact that might
-        // end now: no wall force, nothing to record
+        // no wall contact, or certainly apart from the wall and in no wall
+        // contact that might end now: no wall force, nothing to record
         if
         (
-            clearOfWall(p, axisOffset, 0)
-         && (events_.empty() || !events_.found(labelPair(p.origProc(), p.origId())))
+            !wallLaw_.valid()
+         || (
+                clearOfWall(p, axisOffset, 0)
+             && (events_.empty() || !events_.found(labelPair(p.origProc(), p.origId())))
+            )
         )
         {
             p.f() = Zero;
@@ -1272,7 +1352,7 @@ void Foam::RiserWallContact<CloudType>::collide()
         spring = advancedSpring(spring, n, U, dt);
 
         const riser::ContactForce c =
-            law_.force
+            wallLaw_->force
             (
                 riser::ContactBody(Rp, mEff),
                 overlap, toCore(n), toCore(U), toCore(spring)
