@@ -8,13 +8,23 @@ forces with Basset; the riser shakes at A = 0.2 m, f = 4 Hz and at
 A = 2 m, f = 0.4 Hz (the same largest riser speed, 5 m/s); dt = 1e-4 s,
 stepsPerContact 10; 0.5 s (quick: 0.05 s). No per-particle output.
 
+Variants: no contact, wall contact, wall and pair contact; each with
+contact the particles alone at the wall tracked through the mesh in their
+sub-cycles (aloneAtWall tracked) or sub-stepped without it (meshFree: the
+fluid force linearised and frozen over the flow step).
+
 Reported per scene and variant: CPU time of the solver (user + sys) and its
 ratio to the same scene without contact (collisionModel none: the ores
 then bounce off the mesh's wall, the stock patch interaction), the parcels
 at the start and the end, particles reported outside the pipe, the largest
 number of particles near a contact in a step, of tracked sub-cycles and of
-clustered particles and their contact sub-steps, and with pairs the largest
-pair overlap of the run (fraction of d; the log's riserWallContact line).
+particles sub-stepped without the mesh and their contact sub-steps, with
+pairs the largest pair overlap of the run (fraction of d; the log's
+riserWallContact line), the completed wall contacts, the time average of
+the fraction of ores in wall contact (their durations summed over the
+ores and the run) and the contacts' mean restitution UnOut/UnIn
+(contacts.dat): what aloneAtWall meshFree changes in the physics, against
+what it saves.
 
 With --scaling instead: the cost per particle-step and the memory per
 particle of the wall-and-pair scene (A = 0.2 m, f = 4 Hz) at C_v = 0.05
@@ -39,14 +49,19 @@ import resource
 import subprocess
 import time
 
+import numpy as np
+
 from riserfoam import cases
 
 # variant: (collision model, pairs)
+PAIRS = "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }"
+# variant: collision model, pairs, aloneAtWall
 VARIANTS = {
-    "none": ("none", None),
-    "wall": ("riserWallContact", None),
-    "wall+pairs": ("riserWallContact",
-                   "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }"),
+    "none": ("none", None, None),
+    "wall": ("riserWallContact", None, "tracked"),
+    "wall, alone meshFree": ("riserWallContact", None, "meshFree"),
+    "wall+pairs": ("riserWallContact", PAIRS, "tracked"),
+    "wall+pairs, alone meshFree": ("riserWallContact", PAIRS, "meshFree"),
 }
 # scene: riser amplitude [m] and frequency [Hz]
 SCENES = {"A0.2_f4": (0.2, 4.0), "A2_f0.4": (2.0, 0.4)}
@@ -62,7 +77,7 @@ def remove_entry(path, entry):
                    check=True, stdout=subprocess.DEVNULL)
 
 
-def make(case, end, A, f, collision, pairs, L=1.0, n=12, nz=None, Cv=0.0667):
+def make(case, end, A, f, collision, pairs, alone="tracked", L=1.0, n=12, nz=None, Cv=0.0667):
     cases.copy_tutorial("riser/oscillatingContact", case)
     cases.riser_mesh(case, D=0.1, L=L, n=n, nz=nz)
     props = os.path.join(case, "constant", "riserProperties")
@@ -83,6 +98,8 @@ def make(case, end, A, f, collision, pairs, L=1.0, n=12, nz=None, Cv=0.0667):
     set_entry(cloud, "subModels/collisionModel", collision)
     if pairs:
         set_entry(cloud, "subModels/riserWallContactCoeffs/pairs", pairs)
+    if alone:
+        set_entry(cloud, "subModels/riserWallContactCoeffs/aloneAtWall", alone)
 
 
 def scaling(args, work):
@@ -105,7 +122,7 @@ def scaling(args, work):
             cpu = [float(c) for c in re.findall(r"ExecutionTime = (\S+) s", text)]
             row["N"] = int(re.search(r"riserFill: placed (\d+) ores", text).group(1))
             rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1))
-            clustered = [int(c) for c in re.findall(r"(\d+) clustered particle", text)] or [0]
+            clustered = [int(c) for c in re.findall(r"(\d+) particle\(s\) in clusters or alone", text)] or [0]
             row[name] = {"us_per_particle_step": 1e6 * (cpu[39] - cpu[9]) / (30 * row["N"]),
                          "peak_rss_MB": rss / 1024, "max_clustered": max(clustered),
                          "outside_pipe_reports": text.count("outside the pipe")}
@@ -144,6 +161,13 @@ def scaling(args, work):
                          a["outside_pipe_reports"] + b["outside_pipe_reports"]))
 
 
+def simulated(log):
+    """the simulated time of a log: its last time less the first step's start"""
+    times = [float(t) for t in re.findall(r"^Time = (\S+)", log, flags=re.M)]
+    dt = times[1] - times[0] if len(times) > 1 else 0.0
+    return times[-1] - times[0] + dt
+
+
 def run(case):
     before = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
@@ -155,7 +179,17 @@ def run(case):
     counts = [int(c) for c in re.findall(r"Current number of parcels\s*=\s*(\d+)", text)]
     near = [int(c) for c in re.findall(r"(\d+) particle\(s\) near", text)] or [0]
     sub = [int(c) for c in re.findall(r"(\d+) move-collide subCycles", text)] or [1]
-    clustered = re.findall(r"(\d+) clustered particle\(s\): (\d+) contact sub-steps", text)
+    clustered = re.findall(r"(\d+) particle\(s\) in clusters or alone at the wall: (\d+)"
+                           r" contact sub-steps", text)
+    contacts = os.path.join(case, "postProcessing/lagrangian/kinematicCloud/riserWallContact",
+                            "contacts.dat")
+    restitution = None
+    if os.path.exists(contacts):
+        rows = cases.wall_contacts(case)
+        if len(rows):
+            # weighted by the approach speed (a mean of the ratios is ruled
+            # by the contacts of ores pushed at the wall at ~1e-3 m/s)
+            restitution = float(np.sum(rows["UnOut"]) / np.sum(rows["UnIn"]))
     overlap = re.findall(r"largest pair overlap in this run (\S+)", text)
     placed = re.search(r"riserFill: placed (\d+) ores, solids fraction C_v = (\S+)", text)
     return {
@@ -170,6 +204,12 @@ def run(case):
         "max_clustered": max([int(c) for c, _ in clustered] or [0]),
         "max_contact_substeps": max([int(k) for _, k in clustered] or [0]),
         "largest_pair_overlap_of_d": float(overlap[-1]) if overlap else None,
+        "wall_contacts": len(cases.wall_contacts(case)) if restitution is not None else 0,
+        # the time average of the ores in wall contact, as a fraction
+        "in_wall_contact": (float(np.sum(cases.wall_contacts(case)["duration"]))
+                            / (counts[-1] * simulated(text))
+                            if restitution is not None and counts else 0.0),
+        "mean_wall_restitution": restitution,
     }
 
 
@@ -189,9 +229,9 @@ def main():
     rows = {}
     for scene, (A, f) in SCENES.items():
         rows[scene] = {}
-        for name, (collision, pairs) in VARIANTS.items():
-            case = os.path.join(work, scene, name.replace("+", "_"))
-            make(case, end, A, f, collision, pairs)
+        for name, (collision, pairs, alone) in VARIANTS.items():
+            case = os.path.join(work, scene, re.sub(r"[^A-Za-z0-9]+", "_", name))
+            make(case, end, A, f, collision, pairs, alone)
             r = run(case)
             r["ratio_to_none"] = r["cpu_s"]/rows[scene]["none"]["cpu_s"] if name != "none" else 1.0
             rows[scene][name] = r
@@ -209,18 +249,23 @@ def main():
                   "command.\n\n" % (result["date"], end, " ".join(result["load"])))
         out.write("| scene | contact | ores placed (C_v) | CPU s | ratio to no contact | "
                   "ores at the end | outside-pipe reports | most near a contact | "
-                  "most tracked sub-cycles | most clustered (contact sub-steps) | "
-                  "largest pair overlap / d |\n"
-                  "|---|---|---|---|---|---|---|---|---|---|---|\n")
+                  "most tracked sub-cycles | most sub-stepped without the mesh (contact sub-steps) | "
+                  "largest pair overlap / d | wall contacts | ores in wall contact (time "
+                  "average) | mean wall restitution (sum UnOut / sum UnIn) |\n"
+                  "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
         for scene, variants in rows.items():
             for name, r in variants.items():
-                out.write("| %s | %s | %s (%s) | %.1f | %.2f | %s | %d | %d | %d | %d (%d) | %s |\n"
+                out.write("| %s | %s | %s (%s) | %.1f | %.2f | %s | %d | %d | %d | %d (%d) | %s "
+                          "| %d | %.2f %% | %s |\n"
                           % (scene.replace("_", ", ").replace("A", "A = ").replace("f", "f = "),
                              name, r["placed"], r["Cv"], r["cpu_s"], r["ratio_to_none"],
                              r["parcels_end"], r["outside_pipe_reports"], r["max_near"],
                              r["max_subcycles"], r["max_clustered"], r["max_contact_substeps"],
                              "-" if r["largest_pair_overlap_of_d"] is None
-                             else "%.4f" % r["largest_pair_overlap_of_d"]))
+                             else "%.4f" % r["largest_pair_overlap_of_d"],
+                             r["wall_contacts"], 100 * r["in_wall_contact"],
+                             "-" if r["mean_wall_restitution"] is None
+                             else "%.4f" % r["mean_wall_restitution"]))
 
 
 if __name__ == "__main__":

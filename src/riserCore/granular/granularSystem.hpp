@@ -120,6 +120,9 @@ struct WallContactState
     Vector force = Vector::Zero();          //!< the wall's force on the grain
     Vector normal = Vector::Zero();         //!< from the centre towards the wall
     Vector wallVelocity = Vector::Zero();   //!< the wall's at the contact
+    //! the grain's velocity at the evaluation (the half-step one) relative
+    //! to the wall's there, of its centre
+    Vector velocity = Vector::Zero();
 };
 
 //- A pair contact in progress, in grain i's frame (normal from i towards
@@ -794,6 +797,7 @@ private:
                     slot.touching = false;
                     slot.spring.setZero();
                     slot.state = WallContactState{false, cp.overlap, 0.0};
+                    slot.state.velocity = p.v - cp.velocity;
                     slot.handedOver = false;
                     continue;
                 }
@@ -812,7 +816,8 @@ private:
                 slot.touching = true;
                 slot.state = WallContactState
                 {
-                    true, cp.overlap, c.normal.norm(), F, cp.normal, cp.velocity
+                    true, cp.overlap, c.normal.norm(), F, cp.normal, cp.velocity,
+                    p.v - cp.velocity
                 };
                 slot.handedOver = false;
                 ++wallsTouching_;
