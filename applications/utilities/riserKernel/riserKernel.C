@@ -59,8 +59,10 @@ namespace
 
 using namespace Foam;
 
-//- The cell holding p on this processor (-1 if another's); FatalIOError
-//  naming the entry if no processor holds it
+//- The cell holding p on this processor, -1 if another's (a point on a
+//  processor boundary belongs to the lowest-numbered processor holding
+//  it: deposited once); FatalIOError naming the entry if no processor
+//  holds it
 label holdingCell
 (
     const fvMesh& mesh,
@@ -70,13 +72,18 @@ label holdingCell
 )
 {
     const label celli = mesh.findCell(p);
-    if (returnReduce(celli, maxOp<label>()) < 0)
+    const label owner = returnReduce
+    (
+        celli >= 0 ? Pstream::myProcNo() : Pstream::nProcs(),
+        minOp<label>()
+    );
+    if (owner == Pstream::nProcs())
     {
         FatalIOErrorInFunction(dict)
             << "entry '" << key << "': the point " << p
             << " is outside the mesh" << nl << exit(FatalIOError);
     }
-    return celli;
+    return owner == Pstream::myProcNo() ? celli : -1;
 }
 
 } // End anonymous namespace
@@ -93,7 +100,7 @@ int main(int argc, char *argv[])
     #include "createTime.H"
     #include "createDynamicFvMesh.H"
 
-    while (runTime.run())
+    while (mesh.dynamic() && runTime.run())
     {
         ++runTime;
         mesh.update();
