@@ -19,6 +19,17 @@ Description
     from the start time to endTime, step by step, and the deposits are
     spread on the moved mesh.
 
+    With -cloud name, the deposits are instead those of a two-way coupled
+    stock colliding cloud (basicKinematicCollidingCloud of
+    constant/<name>Properties, in the carrier U of the start time, rho and
+    nu of constant/transportProperties) after one step of it, and the
+    kernel is the cloud's ('kernel' in its properties): the utility calls
+    what a coupled solver calls, particleKernel::alphac and
+    particleKernel::SU (alphaMin 0), and prints their sums beside the stock
+    cloud's (theta, SU): sum (1 - alpha_c) V against sum theta V, the
+    largest of each; the momentum source's explicit part sum(source) and
+    implicit part sum(diag).
+
     Prints the bandwidth, the largest cell size, the mesh's cross-section
     and, for each field, its sum over the cells (sum of theta V; sum of the
     amounts) before and after spreading; writes
@@ -43,6 +54,9 @@ Usage
     The kernel sub-dictionary is that of particleKernel. Unknown entries
     are refused; a point outside the mesh is an error.
 
+    riserKernel -cloud kinematicCloud: no riserKernelDict; the cloud's
+    properties hold the kernel.
+
 \*---------------------------------------------------------------------------*/
 
 #include "fvCFD.H"
@@ -51,6 +65,8 @@ Usage
 #include "checkedEntry.H"
 #include "OFstream.H"
 #include "Tuple2.H"
+#include "basicKinematicCollidingCloud.H"
+#include "singlePhaseTransportModel.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -86,6 +102,58 @@ label holdingCell
     return owner == Pstream::myProcNo() ? celli : -1;
 }
 
+
+//- One step of the coupled cloud, its deposits spread with the cloud's
+//  kernel: alpha_c and the momentum source beside the stock cloud's
+void spreadCloud(const fvMesh& mesh, Time& runTime, const word& cloudName)
+{
+    #include "readGravitationalAcceleration.H"
+    volVectorField U
+    (
+        IOobject("U", runTime.timeName(), mesh, IOobject::MUST_READ),
+        mesh
+    );
+    const surfaceScalarField phi
+    (
+        IOobject("phi", runTime.timeName(), mesh),
+        fvc::flux(U)
+    );
+    singlePhaseTransportModel transport(U, phi);
+    const dimensionedScalar rhoInf("rhoInf", dimDensity, transport);
+    const volScalarField rho
+    (
+        IOobject("rho", runTime.timeName(), mesh),
+        mesh,
+        rhoInf
+    );
+    const volScalarField mu
+    (
+        IOobject("mu", runTime.timeName(), mesh),
+        transport.nu()*rhoInf
+    );
+
+    basicKinematicCollidingCloud cloud(cloudName, rho, U, mu, g);
+    particleKernel kernel(mesh, cloud.particleProperties().subDict("kernel"));
+    ++runTime;
+    cloud.evolve();
+
+    const scalarField& V = mesh.V().field();
+    const scalarField theta(cloud.theta()().primitiveField());
+    const scalarField spreadTheta(1 - kernel.alphac(cloud, 0)().primitiveField());
+    const fvVectorMatrix stock(cloud.SU(U));
+    const fvVectorMatrix spread(kernel.SU(cloud, U));
+    Info<< "parcels " << cloud.size() << " largestDiameter "
+        << kernel.largestDiameter(cloud) << nl
+        << "solids stock " << gSum(theta*V) << " spread "
+        << gSum(spreadTheta*V) << nl
+        << "largestTheta stock " << gMax(theta) << " spread "
+        << gMax(spreadTheta) << nl
+        << "explicit stock " << gSum(stock.source())
+        << " spread " << gSum(spread.source()) << nl
+        << "implicit stock " << gSum(stock.diag())
+        << " spread " << gSum(spread.diag()) << nl;
+}
+
 } // End anonymous namespace
 
 
@@ -94,6 +162,13 @@ int main(int argc, char *argv[])
     argList::addNote
     (
         "Spread point deposits over the coarse-particle kernel"
+    );
+    argList::addOption
+    (
+        "cloud",
+        "name",
+        "spread the deposits of one step of this two-way coupled colliding"
+        " cloud with its kernel"
     );
 
     #include "setRootCase.H"
@@ -104,6 +179,14 @@ int main(int argc, char *argv[])
     {
         ++runTime;
         mesh.update();
+    }
+
+    Info().precision(17);
+    if (args.found("cloud"))
+    {
+        spreadCloud(mesh, runTime, args.get<word>("cloud"));
+        Info<< "End" << nl << endl;
+        return 0;
     }
 
     const IOdictionary dict
@@ -163,7 +246,6 @@ int main(int argc, char *argv[])
     const scalar thetaAfter = gSum(theta.field()*mesh.V().field());
     const vector amountAfter = gSum(amount.field());
 
-    Info().precision(17);
     if (kernel.type() == particleKernel::kernelType::diffusion)
     {
         Info<< "bandwidth " << kernel.bandwidth(d) << nl;
