@@ -105,8 +105,8 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::particleKernel::SU
     {
         return tsource;
     }
-    volVectorField::Internal uTrans(cloud.UTrans());
-    volScalarField::Internal uCoeff(cloud.UCoeff());
+    volVectorField::Internal uTrans("particleKernel:UTrans", cloud.UTrans());
+    volScalarField::Internal uCoeff("particleKernel:UCoeff", cloud.UCoeff());
     spreadAmount(uTrans, dMax);
     spreadAmount(uCoeff, dMax);
 
