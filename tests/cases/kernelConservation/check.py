@@ -9,7 +9,7 @@ sources, spread over b = 3 d in 4 pseudo-steps:
   sources before and after, relative 1e-12. The fluxes of each implicit
   step cancel pairwise (cyclic faces included) and vanish at the wall, so
   what is left is the linear solver's residual (normalised 1e-14) and the
-  round-off of sums over 9,000 cells (about 1e-16 x sqrt(9000) each):
+  round-off of sums over 11,520 cells (about 1e-16 x sqrt(11520) each):
   1e-12 is a hundred times above both. Vector sources of both signs are
   measured against the sum of their magnitudes;
 - the spread stays non-negative (the matrix is an M-matrix): the smallest

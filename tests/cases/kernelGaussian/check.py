@@ -10,10 +10,10 @@ cancel in the sums), so the 1-D closed forms apply.
 - Width: the second moment sum theta V (x - x0)^2 / sum theta V along
   each axis equals 2 T exactly on a uniform grid, whatever h and N (the
   discrete Laplacian of x^2 is 2; the matrix is symmetric). What is left
-  is the walls' reflection of the far tails (5.2 sigma away; the N-step
-  kernel's tails decay as exp(-|x|/l), l = sqrt(T/N), and the grid adds
-  an excess kurtosis h^2/sigma^2): measured 3e-5 at h = d, N = 16, 3e-4
-  at h = d, N = 4 and 1.2e-3 at h = 2 d, N = 4; tolerance 3e-3.
+  is the walls' reflection of the far tails (5.2 sigma away or more; the
+  N-step kernel's tails decay as exp(-|x|/l), l = sqrt(T/N), and the grid
+  adds an excess kurtosis h^2/sigma^2): measured 3e-5 at h = d, N = 16,
+  3e-4 at h = d, N = 4 and 1.2e-3 at h = 2 d, N = 4; tolerance 3e-3.
 - Shape: N implicit Euler steps give, in continuous space, the kernel
   whose Fourier symbol is (1 + T k^2/N)^-N (kernel.steps1d); the grid
   adds an error of second order in h/sigma (the Laplacian's truncation
