@@ -204,9 +204,17 @@ Foam::particleKernel::workField(const word& name) const
 }
 
 
-void Foam::particleKernel::diffuse(volScalarField& phi, const scalar b) const
+void Foam::particleKernel::diffuse
+(
+    List<scalarField>& densities,
+    const scalar b
+) const
 {
     const scalar dtau = sqr(b)/4/pseudoSteps_;
+
+    // the field the matrix solves for; each density in turn
+    tmp<volScalarField> twork(workField("spread"));
+    volScalarField& phi = twork.ref();
 
     // the two-point Laplacian (no explicit non-orthogonal part: an
     // M-matrix, non-negative deposits stay non-negative), whatever the
@@ -231,6 +239,15 @@ void Foam::particleKernel::diffuse(volScalarField& phi, const scalar b) const
         dimensionedScalar("dtau", dimArea, dtau)
     );
 
+    // V phi - dtau laplacian(phi) = V phi_old: the matrix is the same for
+    // every step and density (the solver leaves it unchanged), only the
+    // source changes
+    fvScalarMatrix eq
+    (
+        fvm::Sp(dimensionedScalar("one", dimless, 1), phi)
+      - laplacian->fvmLaplacian(dtauf, phi)
+    );
+
     dictionary controls;
     controls.add("solver", "PCG");
     controls.add("preconditioner", "DIC");
@@ -241,25 +258,24 @@ void Foam::particleKernel::diffuse(volScalarField& phi, const scalar b) const
     // the pseudo-steps' solver lines are not the flow's: kept out of the log
     const int printing = solverPerformance::debug;
     solverPerformance::debug = 0;
-    for (label step = 0; step < pseudoSteps_; ++step)
+    for (scalarField& density : densities)
     {
-        const volScalarField::Internal phiOld(phi.internalField());
-        fvScalarMatrix eq
-        (
-            fvm::Sp(dimensionedScalar("one", dimless, 1), phi)
-          - laplacian->fvmLaplacian(dtauf, phi)
-         ==
-            phiOld
-        );
-        const solverPerformance perf = eq.solve(controls);
-        if (!perf.converged() && perf.finalResidual() > 1e-10)
+        phi.primitiveFieldRef() = density;
+        phi.correctBoundaryConditions();
+        for (label step = 0; step < pseudoSteps_; ++step)
         {
-            WarningInFunction
-                << "pseudo-step " << step << " of " << phi.name()
-                << " left the residual " << perf.finalResidual()
-                << " after " << perf.nIterations() << " iterations: the sum"
-                << " of the spread field is kept to about that" << endl;
+            eq.source() = mesh_.V().field()*phi.primitiveField();
+            const solverPerformance perf = eq.solve(controls);
+            if (!perf.converged() && perf.finalResidual() > 1e-10)
+            {
+                WarningInFunction
+                    << "pseudo-step " << step << " left the residual "
+                    << perf.finalResidual() << " after "
+                    << perf.nIterations() << " iterations: the sum of the"
+                    << " spread field is kept to about that" << endl;
+            }
         }
+        density = phi.primitiveField();
     }
     solverPerformance::debug = printing;
 }

@@ -16,14 +16,15 @@ void Foam::particleKernel::spreadField
     const scalar b
 ) const
 {
-    for (direction cmpt = 0; cmpt < pTraits<Type>::nComponents; ++cmpt)
+    List<scalarField> components(pTraits<Type>::nComponents);
+    forAll(components, cmpt)
     {
-        tmp<volScalarField> twork(workField("spread"));
-        volScalarField& work = twork.ref();
-        work.primitiveFieldRef() = density.component(cmpt);
-        work.correctBoundaryConditions();
-        diffuse(work, b);
-        density.replace(cmpt, work.primitiveField());
+        components[cmpt] = density.component(cmpt);
+    }
+    diffuse(components, b);
+    forAll(components, cmpt)
+    {
+        density.replace(cmpt, components[cmpt]);
     }
 }
 
