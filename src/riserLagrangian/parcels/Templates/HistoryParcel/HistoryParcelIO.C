@@ -42,7 +42,7 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
             >> contacts_.wallContacts >> contacts_.wallOverlapMax
             >> contacts_.wallImpactSpeed >> contacts_.wallEnergy
             >> contacts_.pairContacts >> contacts_.pairImpactSpeed
-            >> contacts_.pairEnergy;
+            >> contacts_.pairEnergy >> contacts_.subStepOffset;
         setHistory(steps, slip0, window, tail);
     }
 
@@ -140,6 +140,12 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
             << "; they start at zero there" << endl;
     }
 
+    if (!readTrace("subStepOffset", &contactTrace::subStepOffset, true) && valid)
+    {
+        Info<< "    " << c.name() << ": no subStepOffset written at "
+            << c.time().timeName() << "; zero there" << endl;
+    }
+
     // clouds written without histories (another solver, or initial
     // particles): each particle starts its history at its next step
     if (valid && !histories)
@@ -193,7 +199,8 @@ void Foam::HistoryParcel<ParcelType>::collectFields
     scalarField& wallEnergy,
     labelField& pairContacts,
     scalarField& pairImpactSpeed,
-    scalarField& pairEnergy
+    scalarField& pairEnergy,
+    vectorField& subStepOffset
 )
 {
     label i = 0;
@@ -209,6 +216,7 @@ void Foam::HistoryParcel<ParcelType>::collectFields
         pairContacts[i] = trace.pairContacts;
         pairImpactSpeed[i] = trace.pairImpactSpeed;
         pairEnergy[i] = trace.pairEnergy;
+        subStepOffset[i] = trace.subStepOffset;
         ++i;
     }
 }
@@ -256,10 +264,15 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
         c.fieldIOobject("pairEnergy", IOobject::NO_READ),
         np
     );
+    IOField<vector> subStepOffset
+    (
+        c.fieldIOobject("subStepOffset", IOobject::NO_READ),
+        np
+    );
     collectFields
     (
         c, steps, slip0, contacts, overlapMax, impactSpeed, wallEnergy,
-        pairContacts, pairImpactSpeed, pairEnergy
+        pairContacts, pairImpactSpeed, pairEnergy, subStepOffset
     );
 
     vectorFieldCompactIOField window
@@ -292,6 +305,7 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     pairContacts.write(valid);
     pairImpactSpeed.write(valid);
     pairEnergy.write(valid);
+    subStepOffset.write(valid);
 }
 
 
@@ -317,7 +331,8 @@ void Foam::HistoryParcel<ParcelType>::writeObjects
         cloud::createIOField<scalar>("wallEnergy", np, obr),
         cloud::createIOField<label>("pairContacts", np, obr),
         cloud::createIOField<scalar>("pairImpactSpeed", np, obr),
-        cloud::createIOField<scalar>("pairEnergy", np, obr)
+        cloud::createIOField<scalar>("pairEnergy", np, obr),
+        cloud::createIOField<vector>("subStepOffset", np, obr)
     );
 }
 
@@ -372,6 +387,11 @@ void Foam::HistoryParcel<ParcelType>::writeProperties
     (
         os, "pairEnergy", contacts_.pairEnergy, namesOnly, delim, filters
     );
+    ParcelType::writeProperty
+    (
+        os, "subStepOffset", contacts_.subStepOffset, namesOnly, delim,
+        filters
+    );
 }
 
 
@@ -397,7 +417,8 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << p.contacts_.wallEnergy
         << token::SPACE << p.contacts_.pairContacts
         << token::SPACE << p.contacts_.pairImpactSpeed
-        << token::SPACE << p.contacts_.pairEnergy;
+        << token::SPACE << p.contacts_.pairEnergy
+        << token::SPACE << p.contacts_.subStepOffset;
 
     os.check(FUNCTION_NAME);
     return os;

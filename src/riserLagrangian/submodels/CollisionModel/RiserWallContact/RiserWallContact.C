@@ -198,9 +198,6 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     cellAxisDistance_(cm.cellAxisDistance_),
     events_(cm.events_),
     pairEvents_(cm.pairEvents_),
-    engineEnd_(cm.engineEnd_),
-    engineEndBefore_(cm.engineEndBefore_),
-    engineEndIndex_(cm.engineEndIndex_),
     lost_(cm.lost_)
 {}
 
@@ -917,6 +914,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
 (
     const UList<parcelType*>& parcels,
     const UList<linearisedAcceleration>& fluidAcceleration,
+    const UList<vector>& startOffset,
     const label nSubNeeded
 )
 {
@@ -926,21 +924,6 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     const scalar t0 = time.value() - dt;
     const label nOwn = parcels.size();
     const bool walls = wallLaw_.valid();
-    if (engineEndIndex_ != time.timeIndex())
-    {
-        // the ends of the previous flow step (older ones are stale: the
-        // particle has been tracked alone since)
-        if (engineEndIndex_ == time.timeIndex() - 1)
-        {
-            engineEndBefore_.transfer(engineEnd_);
-        }
-        else
-        {
-            engineEndBefore_.clear();
-        }
-        engineEnd_.clear();
-        engineEndIndex_ = time.timeIndex();
-    }
 
     // this processor's particles at the step's start: state, springs
     // (pair records flattened: owner, other, spring) and contact forces
@@ -956,26 +939,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         const parcelType& p = *parcels[i];
         keys[i] = labelPair(p.origProc(), p.origId());
         x[i] = p.position();
-        // A particle the engine sub-stepped in the previous flow step too
-        // starts where the engine left it, not where its track through the
-        // mesh ended: the track, split into pieces of at most maxCo of the
-        // step with the fluid forces integrated after each, moves it by a
-        // part of the fluid's a dt^2/2 beyond what it was given, ~1e-7 m,
-        // as much as a slow contact's overlap, and a contact in progress
-        // shifted by it at each flow step gains or loses energy (slow
-        // rebounds at e_n > 1 were measured). The offset between the two
-        // stays that of one step; it is wrapped across the cyclic ends.
-        xStart[i] = x[i];
-        const auto end = engineEndBefore_.cfind(keys[i]);
-        if (end.found())
-        {
-            vector offset = *end - x[i];
-            if (section_.periodic)
-            {
-                offset.z() -= section_.length*std::round(offset.z()/section_.length);
-            }
-            xStart[i] += offset;
-        }
+        xStart[i] = x[i] + startOffset[i];
         U[i] = p.U();
         omega[i] = rotation_ ? p.omega() : vector::zero;
         a[i] = fluidAcceleration[i].a0;
@@ -1268,9 +1232,9 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         // puts it where the engine left it (up to the track's own share of
         // the fluid's a dt^2/2: above); the velocity gets the contacts'
         // change on top of the fluid forces' own
-        c.dx = fromCore(g.x) - allX[k] - dt*allU[k];
+        c.x = fromCore(g.x);
+        c.dx = c.x - allX[k] - dt*allU[k];
         c.dU = fromCore(riser::Vector(g.v - gFree.v));
-        engineEnd_.set(allKeys[k], fromCore(g.x));
         c.dL = allInertia[k]*fromCore(riser::Vector(g.omega - gFree.omega));
         c.f = (allMp[k]/allM[k])*fromCore(grains.contactForce(i));
         c.torque = rotation_ ? fromCore(grains.contactTorque(i)) : vector::zero;
