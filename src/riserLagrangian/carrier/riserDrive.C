@@ -6,6 +6,7 @@
 #include "riserDrive.H"
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
+#include "fvMatrices.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -142,32 +143,74 @@ Foam::scalar Foam::riserDrive::bulkVelocity
 }
 
 
+Foam::tmp<Foam::scalarField> Foam::riserDrive::response
+(
+    const fvVectorMatrix& UEqn,
+    const volVectorField& U,
+    const dictionary& solverControls
+) const
+{
+    // The axial component's matrix: the coefficients and the patches'
+    // implicit parts (the response is zero on walls: no boundary source)
+    lduMatrix A(UEqn);
+    scalarField& diag = A.diag();
+    forAll(U.boundaryField(), patchi)
+    {
+        const labelUList& cells = mesh_.boundary()[patchi].faceCells();
+        const vectorField& coeffs = UEqn.internalCoeffs()[patchi];
+        forAll(cells, i)
+        {
+            diag[cells[i]] += coeffs[i].z();
+        }
+    }
+
+    FieldField<Field, scalar> boundaryCoeffs(UEqn.boundaryCoeffs().component(vector::Z));
+    FieldField<Field, scalar> internalCoeffs(UEqn.internalCoeffs().component(vector::Z));
+
+    // a unit acceleration in every cell
+    const scalarField source(mesh_.V());
+    tmp<scalarField> ts(new scalarField(source.size(), Zero));
+    lduMatrix::solver::New
+    (
+        "riserDriveResponse",
+        A,
+        boundaryCoeffs,
+        internalCoeffs,
+        U.boundaryField().scalarInterfaces(),
+        solverControls
+    )->solve(ts.ref(), source, vector::Z);
+    return ts;
+}
+
+
 void Foam::riserDrive::correct
 (
     const volScalarField& alphac,
-    const volScalarField& rAU,
-    volVectorField& U
+    const fvVectorMatrix& UEqn,
+    volVectorField& U,
+    const dictionary& solverControls
 )
 {
     lastBulk_ = bulkVelocity(alphac, U);
 
+    const scalarField s(response(UEqn, U, solverControls));
     const scalarField& V = mesh_.V();
-    scalar response = 0, volume = 0;
+    scalar gain = 0, volume = 0;
     forAll(V, celli)
     {
-        response += alphac[celli]*rAU[celli]*V[celli];
+        gain += alphac[celli]*s[celli]*V[celli];
         volume += V[celli];
     }
-    reduce(response, sumOp<scalar>());
+    reduce(gain, sumOp<scalar>());
     reduce(volume, sumOp<scalar>());
 
     // the acceleration that moves the bulk velocity to the target
-    const scalar dG = relaxation_*(target_ - lastBulk_)*volume/response;
+    const scalar dG = relaxation_*(target_ - lastBulk_)*volume/gain;
 
     vectorField& Ui = U.primitiveFieldRef();
     forAll(Ui, celli)
     {
-        Ui[celli].z() += rAU[celli]*dG;
+        Ui[celli].z() += s[celli]*dG;
     }
     U.correctBoundaryConditions();
 
