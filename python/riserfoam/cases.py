@@ -355,15 +355,17 @@ def wall_contacts(case):
 # ------------------------------------------------- the computed carrier
 
 def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.01,
-                      drive="", dt=100.0, end=4000.0, riser="", U0=(0.0, 0.0, 0.0),
-                      nCorrectors=2, injection="", coupled=False, dynamic=False):
+                      A=0.0, f=0.0, phi0=0.0, frame="riser", drive="", dt=100.0, end=4000.0,
+                      U0=(0.0, 0.0, 0.0), nCorrectors=2, injection="", coupled=False,
+                      write_every=None):
     """A periodic riser section for riserCoupledFoam: the O-grid (n across
     the core, nz along L), a laminar carrier (nu, rho), at rest at the start
-    unless U0; riserProperties of diameter D and uCentre with the further
-    entries riser (text; A, f, frame, ...) and the drive's entries drive
-    (text); the riser cloud with the injectors injection (text) and
-    coupled true or false. dynamic: the lab frame's moving mesh
-    (riserOscillation; the wall moves with it)."""
+    unless U0; riserProperties of diameter D, uCentre, amplitude A [m],
+    frequency f [Hz], phase phi0, frame (riser or lab: then the mesh and the wall move
+    with the riser, riserOscillation) and the drive's entries drive (text);
+    the riser cloud with the injectors injection (text) and coupled true
+    or false; written every write_every steps (default: at the end)."""
+    dynamic = frame == "lab" and A * f > 0
     shutil.rmtree(case, ignore_errors=True)
     os.makedirs(os.path.join(case, "system"))
     ff.write_dictionary(os.path.join(case, "system/controlDict"), """
@@ -382,7 +384,7 @@ writePrecision  12;
 timeFormat      general;
 timePrecision   8;
 runTimeModifiable no;
-""" % (end, dt, max(1, round(end / dt))))
+""" % (end, dt, write_every or max(1, round(end / dt))))
     ff.write_dictionary(os.path.join(case, "system/fvSchemes"), """
 ddtSchemes           { default Euler; }
 gradSchemes          { default Gauss linear; }
@@ -412,11 +414,12 @@ PIMPLE
     ff.write_dictionary(os.path.join(case, "constant/riserProperties"), """
 D           %r;
 uCentre     %r;
-A           0;
-f           0;
-%s
+A           %r;
+f           %r;
+phi0        %r;
+frame       %s;
 drive { %s }
-""" % (D, uCentre, riser, drive))
+""" % (D, uCentre, A, f, phi0, frame, drive))
     ff.write_dictionary(os.path.join(case, "constant/transportProperties"), """
 transportModel  Newtonian;
 nu              %r;
@@ -430,7 +433,7 @@ rhoInf          %r;
     if dynamic:
         ff.write_dictionary(os.path.join(case, "constant/dynamicMeshDict"), """
 dynamicFvMesh   dynamicMotionSolverFvMesh;
-motionSolverLibs ("libfvMotionSolvers.so");
+motionSolverLibs (fvMotionSolvers);
 motionSolver    solidBody;
 solidBodyMotionFunction riserOscillation;
 """)
@@ -485,7 +488,7 @@ dimensions [0 2 -2 0 0 0 0];
 internalField uniform 0;
 boundaryField
 {
-    riserWall { type zeroGradient; }
+    riserWall { type fixedFluxPressure; value uniform 0; }
     bottom { type cyclic; }
     top { type cyclic; }
 }

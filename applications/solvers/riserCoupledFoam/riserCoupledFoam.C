@@ -146,10 +146,46 @@ int main(int argc, char *argv[])
     #include "createDynamicFvMesh.H"
     #include "createFields.H"
 
+    // The riser's acceleration, which the pressure takes: p is the
+    // pressure less its part -a_r.x (and less the hydrostatic part). In
+    // the riser frame a_r is the frame's (carrierFlow); in the lab frame
+    // the change of the moving mesh's velocity over the step,
+    // (x_c(t) - 2 x_c(t - dt) + x_c(t - 2 dt))/dt^2, so that the carrier
+    // keeps the wall's discrete velocity
+    dimensionedVector aRiser("aRiser", dimAcceleration, Zero);
+    const bool riserFrame =
+        carrier.frame() == carrierFlow::simulationFrame::riser;
+    auto riserAcceleration = [&]()
+    {
+        const riser::RiserMotion& motion = carrier.riserMotion();
+        const scalar t = runTime.value();
+        if (motion.maxSpeed() == 0)
+        {
+            return vector::zero;
+        }
+        if (riserFrame)
+        {
+            return carrier.frameAcceleration(t);
+        }
+        const scalar dt = runTime.deltaTValue();
+        return vector
+        (
+            (
+                motion.axisPosition(t) - 2*motion.axisPosition(t - dt)
+              + motion.axisPosition(t - 2*dt)
+            )/sqr(dt),
+            0,
+            0
+        );
+    };
+
     // The forces that act through the face fluxes, as the pressure
     // gradient does, times 1/A: the particles' explicit reaction, the drive
-    // (a uniform pressure gradient) and, in the riser frame, the fictitious
-    // force -a_r on the carrier's mass (alpha_c weighted)
+    // (a uniform pressure gradient) and what p leaves of the riser's
+    // acceleration: in the riser frame the fictitious force -alpha_c a_r
+    // on the carrier's mass less the -a_r that p takes, (1 - alpha_c) a_r,
+    // nothing without particles; in the lab frame the a_r that p does not
+    // give
     auto forceFlux = [&]
     (
         const volScalarField& rAU,
@@ -161,15 +197,16 @@ int main(int argc, char *argv[])
         {
             tflux.ref() += rAUf*(drive->acceleration() & mesh.Sf());
         }
-        const dimensionedVector aFrame
-        (
-            "frameAcceleration",
-            dimAcceleration,
-            carrier.frameAcceleration(runTime.value())
-        );
-        if (mag(aFrame.value()) > 0)
+        if (mag(aRiser.value()) > 0)
         {
-            tflux.ref() -= rAUf*alphacf*(aFrame & mesh.Sf());
+            if (riserFrame)
+            {
+                tflux.ref() += rAUf*(1 - alphacf)*(aRiser & mesh.Sf());
+            }
+            else
+            {
+                tflux.ref() += rAUf*(aRiser & mesh.Sf());
+            }
         }
         return tflux;
     };
@@ -189,14 +226,13 @@ int main(int argc, char *argv[])
             kinematicCloud.storeGlobalPositions();
         }
 
+        // (phi, relative to the mesh, stays: the riser's mesh moves
+        // rigidly, its cells and the wall's flux, zero, unchanged)
         mesh.update();
-
-        if (mesh.moving())
+        if (!phiRelative && mesh.moving())
         {
-            // the absolute flux of the face velocities, relative to the
-            // moved mesh
-            phi = mesh.Sf() & Uf();
             fvc::makeRelative(phi, U);
+            phiRelative = true;
         }
 
         #include "CourantNo.H"
@@ -207,6 +243,8 @@ int main(int argc, char *argv[])
         Info<< "Evolving " << kinematicCloud.name() << endl;
         kinematicCloud.evolve();
         #include "finishCloudStep.H"
+
+        aRiser.value() = riserAcceleration();
 
         // What the carrier takes from the particles (particleCoupling.H)
         coupling.volumeFraction(alphac);

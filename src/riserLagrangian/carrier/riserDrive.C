@@ -100,7 +100,7 @@ Foam::riserDrive::riserDrive
             file,
             sources,
             "# riserDrive: the uniform pressure gradient driving the carrier"
-            " at the bulk velocity " + std::to_string(target_) + " m/s\n"
+            " at the bulk velocity " + std::string(Foam::name(target_)) + " m/s\n"
             "# t [s], dpdz [Pa/m], Ub [m/s] (before the step's last"
             " adjustment)\n"
             "# t dpdz Ub\n",
