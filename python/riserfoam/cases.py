@@ -493,3 +493,38 @@ boundaryField
     top { type cyclic; }
 }
 """, "volScalarField")
+
+
+def coupled_pipe_kOmegaSST(case, ub, D=0.1):
+    """Make a coupled_pipe_case turbulent: kOmegaSST with wall functions
+    (k, omega, nut at the wall), its fields from a turbulence intensity
+    of 5 % of the bulk velocity ub and a length scale of 0.07 D, upwind
+    convection of k and omega; the carrier starts as a plug flow at ub."""
+    ff.write_dictionary(os.path.join(case, "constant/turbulenceProperties"),
+                        "simulationType RAS;\nRAS { RASModel kOmegaSST; turbulence on; "
+                        "printCoeffs off; }\n")
+    k = 1.5 * (0.05 * ub) ** 2
+    omega = k ** 0.5 / (0.09 ** 0.25 * 0.07 * D)
+    for name, dims, value, wall in (
+            ("k", "[0 2 -2 0 0 0 0]", k, "kqRWallFunction"),
+            ("omega", "[0 0 -1 0 0 0 0]", omega, "omegaWallFunction"),
+            ("nut", "[0 2 -1 0 0 0 0]", 0.0, "nutkWallFunction")):
+        ff.write_dictionary(os.path.join(case, "0", name), """
+dimensions %s;
+internalField uniform %r;
+boundaryField
+{
+    riserWall { type %s; value uniform %r; }
+    bottom { type cyclic; }
+    top { type cyclic; }
+}
+""" % (dims, value, wall, value), "volScalarField")
+    ff.edit(os.path.join(case, "0/U"), r"internalField uniform \([^)]*\);",
+            "internalField uniform (0 0 %r);" % ub)
+    schemes = os.path.join(case, "system/fvSchemes")
+    ff.edit(schemes, r"^divSchemes .*$",
+            "divSchemes           { default Gauss linear; div(alphaPhi,U) Gauss linearUpwind grad(U);"
+            " div(alphaPhi,k) Gauss upwind; div(alphaPhi,omega) Gauss upwind; }")
+    with open(schemes, "a") as f:
+        f.write("wallDist             { method meshWave; }\n")
+    ff.edit(os.path.join(case, "system/fvSolution"), r'"U\.\*"', '"(U|k|omega).*"')
