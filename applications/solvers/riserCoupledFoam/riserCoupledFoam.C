@@ -20,29 +20,35 @@ Description
     p the kinematic pressure):
         ddt(alpha_c) + div(alpha_c u) = 0,
         ddt(alpha_c u) + div(alpha_c u u) - div(alpha_c R_eff)
-            = -grad p + G e_z - alpha_c a_r + f_p / rho,
+            = -grad p + G e_z + b_r + f_p / rho,
     where R_eff is the stress of the turbulence model of
     constant/turbulenceProperties (laminar, RAS or LES, OpenFOAM's own,
     alpha_c weighted), G e_z the drive of a periodic riser (a uniform
-    pressure gradient, riserDrive), a_r the riser's acceleration in the
-    riser frame (the fictitious force on the carrier's mass; zero in the lab
-    frame) and f_p the particles' reaction per unit volume, -sum_p F_p/V
-    over the forces the cloud couples (drag, lift, added mass, history and
-    fluid stress: particleCoupling.H). Gravity is not in the carrier's
-    equation: p is the pressure less its hydrostatic part, which the
-    particles feel through their buoyant weight (force gravity).
+    pressure gradient, riserDrive), f_p the particles' reaction per unit
+    volume, -sum_p F_p/V over the forces the cloud couples (drag, lift,
+    added mass, history and fluid stress: particleCoupling.H), and b_r what
+    the pressure leaves of the riser's acceleration a_r. p is the pressure
+    less its hydrostatic part (the particles feel it through their buoyant
+    weight, force gravity) and less -a_r.x, which takes a uniform a_r
+    whole: in the riser frame the carrier's fictitious force -alpha_c a_r
+    leaves b_r = (1 - alpha_c) a_r, nothing without particles; in the lab
+    frame (the mesh and the wall moving) b_r = a_r, the change of the
+    mesh's velocity over the step, (x_c(t) - 2 x_c(t - dt) + x_c(t - 2 dt))
+    / dt^2, given to the cells (the moving wall's flux is the wall's).
 
     Each step: store the particles' global positions and move the mesh (lab
     frame: constant/dynamicMeshDict, solidBodyMotionFunction
-    riserOscillation; the carrier's flux made relative to the moving mesh),
-    evolve the cloud in the present carrier (interpolated, carrierFlow),
-    take alpha_c and the reaction from the particles, then the PIMPLE
-    loop: the momentum predictor with the reaction's implicit part in the
-    matrix; pressure corrections in which the reaction's explicit part,
-    the drive and the frame force act through the face fluxes (as the
-    pressure gradient does, so that a pressure gradient balances a uniform
-    force exactly), each followed by the drive's adjustment to the target
-    bulk velocity; the turbulence model's correction.
+    riserOscillation; the carrier's flux, relative to the mesh, kept
+    through the rigid move), evolve the cloud in the present carrier
+    (interpolated, carrierFlow), take alpha_c and the reaction from the
+    particles, then the PIMPLE loop: the momentum predictor with the
+    reaction's implicit part in the matrix; pressure corrections in which
+    the reaction's explicit part, the drive and b_r act through the face
+    fluxes (as the pressure gradient does, so that a pressure gradient
+    balances a uniform force exactly), each followed by the drive's
+    adjustment to the target bulk velocity (by the momentum matrix's own
+    response to a uniform axial acceleration, riserDrive); the turbulence
+    model's correction.
 
     Checks at start, shared with riserParcelFoam (riserCommon): a
     restart's start time is complete (checkStartTime.H); the riser agrees
@@ -101,7 +107,10 @@ Usage
     (the periodic riser's pressure needs a reference).
 
     Fields: U [m/s] (riserWall: noSlip in the riser frame, movingWallVelocity
-    in the lab frame), p [m^2/s^2], and the turbulence model's; written
+    in the lab frame), p [m^2/s^2] (riserWall: fixedFluxPressure, which
+    gives the wall the pressure gradient that balances the forces through
+    the fluxes), and the turbulence model's (and system/fvSchemes wallDist
+    for the models that need the wall distance); written
     besides: phi, alphac, the cloud, and <time>/uniform/riserDrive (the
     drive's dp/dz). The drive's time series is
     postProcessing/riserDrive/<start time>/drive.dat (t, dpdz [Pa/m], Ub).
