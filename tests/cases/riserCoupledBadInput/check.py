@@ -82,6 +82,8 @@ expect("frame riser on a moving mesh (the check riserParcelFoam shares)",
                                                 "solidBodyMotionFunction riserOscillation;\n"))
 expect("riserParcelFoam with a drive", "entry 'drive': riserParcelFoam imposes the analytic carrier",
        lambda case: None, solver="riserParcelFoam")
+expect("riserParticle with a drive", "entry 'drive': riserParticle imposes the analytic carrier",
+       lambda case: None, solver="riserParticle")
 
 status, log = run("riserCoupledFoam", lambda case: None)
 if status == 0 and "The cloud is not coupled (coupled false)" in log:
