@@ -350,3 +350,181 @@ def wall_contacts(case):
     ended (Table: origProc origId tStart tEnd duration overlapMax ...)"""
     return tables.read(os.path.join(case, "postProcessing/lagrangian/kinematicCloud/"
                                     "riserWallContact/contacts.dat"))
+
+
+# ------------------------------------------------- the computed carrier
+
+def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.01,
+                      A=0.0, f=0.0, phi0=0.0, frame="riser", drive="", dt=100.0, end=4000.0,
+                      U0=(0.0, 0.0, 0.0), nCorrectors=2, injection="", coupled=False,
+                      write_every=None):
+    """A periodic riser section for riserCoupledFoam: the O-grid (n across
+    the core, nz along L), a laminar carrier (nu, rho), at rest at the start
+    unless U0; riserProperties of diameter D, uCentre, amplitude A [m],
+    frequency f [Hz], phase phi0, frame (riser or lab: then the mesh and the wall move
+    with the riser, riserOscillation) and the drive's entries drive (text);
+    the riser cloud with the injectors injection (text) and coupled true
+    or false; written every write_every steps (default: at the end)."""
+    dynamic = frame == "lab" and A * f > 0
+    shutil.rmtree(case, ignore_errors=True)
+    os.makedirs(os.path.join(case, "system"))
+    ff.write_dictionary(os.path.join(case, "system/controlDict"), """
+application     riserCoupledFoam;
+libs            ("libriserLagrangian.so");
+startFrom       latestTime;
+startTime       0;
+stopAt          endTime;
+endTime         %r;
+deltaT          %r;
+writeControl    timeStep;
+writeInterval   %d;
+purgeWrite      0;
+writeFormat     ascii;
+writePrecision  12;
+timeFormat      general;
+timePrecision   8;
+runTimeModifiable no;
+""" % (end, dt, write_every or max(1, round(end / dt))))
+    ff.write_dictionary(os.path.join(case, "system/fvSchemes"), """
+ddtSchemes           { default Euler; }
+gradSchemes          { default Gauss linear; }
+divSchemes           { default Gauss linear; div(alphaPhi,U) Gauss linearUpwind grad(U); }
+laplacianSchemes     { default Gauss linear corrected; }
+interpolationSchemes { default linear; }
+snGradSchemes        { default corrected; }
+""")
+    ff.write_dictionary(os.path.join(case, "system/fvSolution"), """
+solvers
+{
+    p { solver PCG; preconditioner DIC; tolerance 1e-12; relTol 0; }
+    pFinal { $p; }
+    "U.*" { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-12; relTol 0; }
+}
+PIMPLE
+{
+    nOuterCorrectors 1;
+    nCorrectors %d;
+    nNonOrthogonalCorrectors 1;
+    momentumPredictor yes;
+    pRefCell 0;
+    pRefValue 0;
+}
+""" % nCorrectors)
+    riser_mesh(case, D, L, n, nz=nz, ends="cyclic")
+    ff.write_dictionary(os.path.join(case, "constant/riserProperties"), """
+D           %r;
+uCentre     %r;
+A           %r;
+f           %r;
+phi0        %r;
+frame       %s;
+drive { %s }
+""" % (D, uCentre, A, f, phi0, frame, drive))
+    ff.write_dictionary(os.path.join(case, "constant/transportProperties"), """
+transportModel  Newtonian;
+nu              %r;
+rhoInf          %r;
+""" % (nu, rho))
+    ff.write_dictionary(os.path.join(case, "constant/turbulenceProperties"),
+                        "simulationType laminar;\n")
+    ff.write_dictionary(os.path.join(case, "constant/g"),
+                        "dimensions [0 1 -2 0 0 0 0];\nvalue (0 0 -9.81);\n",
+                        "uniformDimensionedVectorField")
+    if dynamic:
+        ff.write_dictionary(os.path.join(case, "constant/dynamicMeshDict"), """
+dynamicFvMesh   dynamicMotionSolverFvMesh;
+motionSolverLibs (fvMotionSolvers);
+motionSolver    solidBody;
+solidBodyMotionFunction riserOscillation;
+""")
+    ff.write_dictionary(os.path.join(case, "constant/kinematicCloudProperties"), """
+solution
+{
+    active          true;
+    coupled         %s;
+    transient       yes;
+    cellValueSourceCorrection off;
+    maxCo           0.3;
+    sourceTerms { schemes { U semiImplicit 1; } }
+    interpolationSchemes { rho cell; U cellPoint; mu cell; }
+    integrationSchemes { U Euler; }
+}
+constantProperties { rho0 2000; youngsModulus 6e10; poissonsRatio 0.26; alphaMax 0.6; }
+subModels
+{
+    particleForces
+    {
+        wallCorrectedDrag { law continuous; }
+        riserFluidStress;
+        riserFrame;
+        gravity;
+    }
+    injectionModels
+    {
+%s
+    }
+    dispersionModel none;
+    patchInteractionModel standardWallInteraction;
+    standardWallInteractionCoeffs { type rebound; }
+    surfaceFilmModel none;
+    stochasticCollisionModel none;
+    collisionModel none;
+}
+cloudFunctions {}
+""" % ("true" if coupled else "false", injection))
+    wall = "movingWallVelocity" if dynamic else "noSlip"
+    ff.write_dictionary(os.path.join(case, "0/U"), """
+dimensions [0 1 -1 0 0 0 0];
+internalField uniform (%r %r %r);
+boundaryField
+{
+    riserWall { type %s; value uniform (0 0 0); }
+    bottom { type cyclic; }
+    top { type cyclic; }
+}
+""" % (U0 + (wall,)), "volVectorField")
+    ff.write_dictionary(os.path.join(case, "0/p"), """
+dimensions [0 2 -2 0 0 0 0];
+internalField uniform 0;
+boundaryField
+{
+    riserWall { type fixedFluxPressure; value uniform 0; }
+    bottom { type cyclic; }
+    top { type cyclic; }
+}
+""", "volScalarField")
+
+
+def coupled_pipe_kOmegaSST(case, ub, D=0.1):
+    """Make a coupled_pipe_case turbulent: kOmegaSST with wall functions
+    (k, omega, nut at the wall), its fields from a turbulence intensity
+    of 5 % of the bulk velocity ub and a length scale of 0.07 D, upwind
+    convection of k and omega; the carrier starts as a plug flow at ub."""
+    ff.write_dictionary(os.path.join(case, "constant/turbulenceProperties"),
+                        "simulationType RAS;\nRAS { RASModel kOmegaSST; turbulence on; "
+                        "printCoeffs off; }\n")
+    k = 1.5 * (0.05 * ub) ** 2
+    omega = k ** 0.5 / (0.09 ** 0.25 * 0.07 * D)
+    for name, dims, value, wall in (
+            ("k", "[0 2 -2 0 0 0 0]", k, "kqRWallFunction"),
+            ("omega", "[0 0 -1 0 0 0 0]", omega, "omegaWallFunction"),
+            ("nut", "[0 2 -1 0 0 0 0]", 0.0, "nutkWallFunction")):
+        ff.write_dictionary(os.path.join(case, "0", name), """
+dimensions %s;
+internalField uniform %r;
+boundaryField
+{
+    riserWall { type %s; value uniform %r; }
+    bottom { type cyclic; }
+    top { type cyclic; }
+}
+""" % (dims, value, wall, value), "volScalarField")
+    ff.edit(os.path.join(case, "0/U"), r"internalField uniform \([^)]*\);",
+            "internalField uniform (0 0 %r);" % ub)
+    schemes = os.path.join(case, "system/fvSchemes")
+    ff.edit(schemes, r"^divSchemes .*$",
+            "divSchemes           { default Gauss linear; div(alphaPhi,U) Gauss linearUpwind grad(U);"
+            " div(alphaPhi,k) Gauss upwind; div(alphaPhi,omega) Gauss upwind; }")
+    with open(schemes, "a") as f:
+        f.write("wallDist             { method meshWave; }\n")
+    ff.edit(os.path.join(case, "system/fvSolution"), r'"U\.\*"', '"(U|k|omega).*"')

@@ -30,7 +30,7 @@ Description
     with OpenFOAM's closing divider and holds every file of the time
     written before it: a run killed while writing leaves files cut short or
     missing), else the run stops naming the incomplete time and the latest
-    complete one to restart from (checkStartTime.H); the riser exists; its diameter and axis agree with the
+    complete one to restart from (riserCommon/checkStartTime.H); the riser exists; its diameter and axis agree with the
     mesh (largest distance of a mesh point from the axis at t = 0 equal to
     D/2 within 0.1%); the frame agrees with the mesh motion (riser frame:
     static mesh; lab frame with a moving riser: a dynamic mesh).
@@ -103,15 +103,7 @@ int main(int argc, char *argv[])
 
         Info<< "Evolving " << kinematicCloud.name() << endl;
         kinematicCloud.evolve();
-
-        // The step is done: the colliding cloud's closing velocity
-        // half-step leaves stepFraction at 0, and on the moving mesh the
-        // positions written now (and stored at the next step's start) would
-        // use the mesh's old points, off by the riser's displacement.
-        for (auto& p : kinematicCloud)
-        {
-            p.stepFraction() = 1;
-        }
+        #include "finishCloudStep.H"
 
         runTime.write();
 

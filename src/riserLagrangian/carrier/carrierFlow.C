@@ -173,7 +173,8 @@ riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
 
     checkedEntry::allowedKeys
     (
-        dict, {"D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier"}
+        dict,
+        {"D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier", "drive"}
     );
     const scalar D =
         dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);

@@ -1,0 +1,95 @@
+"""riserCoupledFoam's refusals: each bad input stops the run with an error
+naming the entry (and its allowed range), before the first step; a cloud
+that is not coupled runs one-way and says so."""
+import os
+import shutil
+import subprocess
+
+from riserfoam import cases, foamfields
+
+failures = 0
+base = os.path.abspath("base")
+cases.coupled_pipe_case(base, 6, 2, dt=1.0, end=1.0)
+open_riser = os.path.abspath("openBase")
+cases.coupled_pipe_case(open_riser, 6, 2, dt=1.0, end=1.0)
+os.remove(os.path.join(open_riser, "system", "blockMeshDict"))
+cases.riser_mesh(open_riser, 0.1, 0.1, 6, nz=2, ends="wall")
+for field, ends in (("U", "type noSlip;"), ("p", "type zeroGradient;")):
+    for patch in ("bottom", "top"):
+        foamfields.edit(os.path.join(open_riser, "0", field),
+                        r"%s \{ type cyclic; \}" % patch, "%s { %s }" % (patch, ends))
+count = 0
+
+
+def run(solver, edit, source=base):
+    """a copy of source changed by edit(case); the solver's exit status and log"""
+    global count
+    count += 1
+    case = os.path.abspath("case%d" % count)
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(source, case)
+    edit(case)
+    with open(os.path.join(case, "log"), "w") as log:
+        status = subprocess.run([solver, "-case", case], stdout=log,
+                                stderr=subprocess.STDOUT).returncode
+    return status, open(os.path.join(case, "log")).read()
+
+
+def expect(label, text, edit, solver="riserCoupledFoam", source=base):
+    global failures
+    status, log = run(solver, edit, source)
+    line = next((l.strip() for l in log.splitlines() if text in l), None)
+    if status != 0 and line:
+        print("ok: %s stops with: %s" % (label, line[:140]))
+    else:
+        print("FAILED: %s (exit %d) did not stop with '%s'\n%s" % (label, status, text, log[-1500:]))
+        failures += 1
+
+
+def riser(entries):
+    """replace riserProperties' drive and add entries"""
+    def edit(case):
+        path = os.path.join(case, "constant/riserProperties")
+        text = open(path).read()
+        open(path, "w").write(text.replace("drive {  }", entries))
+    return edit
+
+
+def cloud(old, new):
+    def edit(case):
+        foamfields.edit(os.path.join(case, "constant/kinematicCloudProperties"), old, new)
+    return edit
+
+
+expect("carrier exact", "entry 'carrier' = exact", riser("drive {  }\ncarrier exact;"))
+expect("no drive in a periodic riser", "entry 'drive' missing", riser(""))
+expect("a drive in an open riser", "entry 'drive': the riser section is not periodic",
+       lambda case: None, source=open_riser)
+expect("bulkVelocity < 0", "entry 'bulkVelocity' = -1 is outside the allowed range [0, 100]",
+       riser("drive { bulkVelocity -1; }"))
+expect("relaxation 0", "entry 'relaxation' = 0 is outside the allowed range (0, 1]",
+       riser("drive { relaxation 0; }"))
+expect("an unknown drive entry", "unknown entry 'bulk'", riser("drive { bulk 1; }"))
+expect("alphaMax 0.8", "entry 'alphaMax' = 0.8 is outside the allowed range (0, 0.74]",
+       cloud(r"alphaMax 0.6;", "alphaMax 0.8;"))
+expect("no alphaMax", "alphaMax", cloud(r"alphaMax 0.6;", ""))
+expect("frame riser on a moving mesh (the check riserParcelFoam shares)",
+       "frame riser needs a static mesh",
+       lambda case: foamfields.write_dictionary(os.path.join(case, "constant/dynamicMeshDict"),
+                                                "dynamicFvMesh dynamicMotionSolverFvMesh;\n"
+                                                "motionSolverLibs (fvMotionSolvers);\n"
+                                                "motionSolver solidBody;\n"
+                                                "solidBodyMotionFunction riserOscillation;\n"))
+expect("riserParcelFoam with a drive", "entry 'drive': riserParcelFoam imposes the analytic carrier",
+       lambda case: None, solver="riserParcelFoam")
+expect("riserParticle with a drive", "entry 'drive': riserParticle imposes the analytic carrier",
+       lambda case: None, solver="riserParticle")
+
+status, log = run("riserCoupledFoam", lambda case: None)
+if status == 0 and "The cloud is not coupled (coupled false)" in log:
+    print("ok: a cloud with coupled false runs one-way and says so")
+else:
+    print("FAILED: coupled false (exit %d) did not run one-way with its note" % status)
+    failures += 1
+print("%d check(s) failed" % failures)
+raise SystemExit(1 if failures else 0)
