@@ -50,7 +50,7 @@ in a step). Checked:
   relative to |sum(UTrans)| + |sum(UCoeff) U0| (the two nearly cancel:
   the ores start at the carrier's velocity), to 1e-10: the spreading
   solves to a residual of 1e-14 and the fields are written with 17
-  digits (measured: MEASURED_STEP).
+  digits (measured: 9e-16).
 
 Grid-independence and balance figures from the run of the test are
 printed; the figures above are those measured when it was written.
