@@ -357,14 +357,16 @@ def wall_contacts(case):
 def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.01,
                       A=0.0, f=0.0, phi0=0.0, frame="riser", drive="", dt=100.0, end=4000.0,
                       U0=(0.0, 0.0, 0.0), nCorrectors=2, injection="", coupled=False,
-                      write_every=None):
+                      write_every=None, kernel="type none;"):
     """A periodic riser section for riserCoupledFoam: the O-grid (n across
     the core, nz along L), a laminar carrier (nu, rho), at rest at the start
     unless U0; riserProperties of diameter D, uCentre, amplitude A [m],
     frequency f [Hz], phase phi0, frame (riser or lab: then the mesh and the wall move
     with the riser, riserOscillation) and the drive's entries drive (text);
-    the riser cloud with the injectors injection (text) and coupled true
-    or false; written every write_every steps (default: at the end)."""
+    the riser cloud with the injectors injection (text), coupled true
+    or false and the coarse-particle kernel's entries kernel (text; the
+    default, type none, the one-cell deposit); written every write_every
+    steps (default: at the end)."""
     dynamic = frame == "lab" and A * f > 0
     shutil.rmtree(case, ignore_errors=True)
     os.makedirs(os.path.join(case, "system"))
@@ -471,7 +473,8 @@ subModels
     collisionModel none;
 }
 cloudFunctions {}
-""" % ("true" if coupled else "false", injection))
+kernel { %s }
+""" % ("true" if coupled else "false", injection, kernel))
     wall = "movingWallVelocity" if dynamic else "noSlip"
     ff.write_dictionary(os.path.join(case, "0/U"), """
 dimensions [0 1 -1 0 0 0 0];

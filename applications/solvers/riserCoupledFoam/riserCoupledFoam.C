@@ -26,7 +26,9 @@ Description
     alpha_c weighted), G e_z the drive of a periodic riser (a uniform
     pressure gradient, riserDrive), f_p the particles' reaction per unit
     volume, -sum_p F_p/V over the forces the cloud couples (drag, lift,
-    added mass, history and fluid stress: particleCoupling.H), and b_r what
+    added mass, history and fluid stress: particleCoupling.H; each
+    particle's volume and force spread over the cells near it by the
+    cloud's coarse-particle kernel, or kept in its cell), and b_r what
     the pressure leaves of the riser's acceleration a_r. p is the pressure
     less its hydrostatic part (the particles feel it through their buoyant
     weight, force gravity) and less -a_r.x, which takes a uniform a_r
@@ -56,7 +58,8 @@ Description
     density, frame force and injectors (checkCloud.H). And, of this
     solver: riserProperties' 'carrier' is interpolated (the computed
     carrier is the mesh's); a periodic riser (cyclic ends) has a 'drive', a
-    riser with other ends none; the cloud's alphaMax is given. A cloud with
+    riser with other ends none; the cloud's alphaMax and its 'kernel'
+    sub-dictionary are given (particleCoupling.H). A cloud with
     coupled false is a one-way run on the computed carrier: allowed, and
     said in the log.
 
@@ -92,7 +95,18 @@ Usage
     The bound 0.74 is the densest packing of equal spheres, pi/(3 sqrt 2);
     random packings stop near 0.64. The floor on alpha_c keeps the
     carrier's equations defined where the particles, counted whole in the
-    cell of their centre, would fill a cell.
+    cell of their centre, would fill a cell. And, required, the
+    coarse-particle kernel (particleKernel.H lists its entries):
+    \verbatim
+    kernel { type none; }       // each particle's volume and force in the
+                                // cell of its centre (d much below a cell)
+    kernel                      // or spread (d comparable to a cell or more)
+    {
+        type        diffusion;
+        width       3;          // bandwidth, a few diameters
+        widthUnit   diameters;  // of the largest particle so far | metres
+    }
+    \endverbatim
 
     constant/transportProperties: transportModel Newtonian; nu (0, 1] m^2/s;
     rhoInf (0, 1e5] kg/m^3. constant/turbulenceProperties: simulationType
@@ -111,7 +125,8 @@ Usage
     gives the wall the pressure gradient that balances the forces through
     the fluxes), and the turbulence model's (and system/fvSchemes wallDist
     for the models that need the wall distance); written
-    besides: phi, alphac, the cloud, and <time>/uniform/riserDrive (the
+    besides: phi, alphac, particleForce (the particles' explicit reaction
+    over rho [m/s^2]), the cloud, and <time>/uniform/riserDrive (the
     drive's dp/dz). The drive's time series is
     postProcessing/riserDrive/<start time>/drive.dat (t, dpdz [Pa/m], Ub).
 

@@ -1,6 +1,8 @@
 """riserCoupledFoam's refusals: each bad input stops the run with an error
-naming the entry (and its allowed range), before the first step; a cloud
-that is not coupled runs one-way and says so."""
+naming the entry (and its allowed range), before the first step (among
+them a cloud without the coarse-particle kernel's sub-dictionary, which
+riserCoupledFoam requires, and a kernel out of its range); a cloud that
+is not coupled runs one-way and says so."""
 import os
 import shutil
 import subprocess
@@ -73,6 +75,11 @@ expect("an unknown drive entry", "unknown entry 'bulk'", riser("drive { bulk 1; 
 expect("alphaMax 0.8", "entry 'alphaMax' = 0.8 is outside the allowed range (0, 0.74]",
        cloud(r"alphaMax 0.6;", "alphaMax 0.8;"))
 expect("no alphaMax", "alphaMax", cloud(r"alphaMax 0.6;", ""))
+expect("no kernel", "riserCoupledFoam needs the sub-dictionary 'kernel'",
+       cloud(r"kernel \{ type none; \}", ""))
+expect("a kernel wider than the riser", "entry 'width'",
+       cloud(r"kernel \{ type none; \}",
+             "kernel { type diffusion; width 0.2; widthUnit metres; }"))
 expect("frame riser on a moving mesh (the check riserParcelFoam shares)",
        "frame riser needs a static mesh",
        lambda case: foamfields.write_dictionary(os.path.join(case, "constant/dynamicMeshDict"),
