@@ -111,8 +111,8 @@ def scaling(args, work):
         row = {"L_m": L}
         for name in ("none", "wall+pairs"):
             case = os.path.join(work, "scaling", "N%d_%s" % (N, name.replace("+", "_")))
-            collision, pairs = VARIANTS[name]
-            make(case, 40e-4, 0.2, 4.0, collision, pairs,
+            collision, pairs, alone = VARIANTS[name]
+            make(case, 40e-4, 0.2, 4.0, collision, pairs, alone,
                  L=L, n=4, nz=max(4, int(round(L / 0.025))), Cv=Cv)
             log = os.path.join(case, "log.riserParcelFoam")
             with open(log, "w") as out:
@@ -122,7 +122,8 @@ def scaling(args, work):
             cpu = [float(c) for c in re.findall(r"ExecutionTime = (\S+) s", text)]
             row["N"] = int(re.search(r"riserFill: placed (\d+) ores", text).group(1))
             rss = int(re.search(r"Maximum resident set size \(kbytes\): (\d+)", text).group(1))
-            clustered = [int(c) for c in re.findall(r"(\d+) particle\(s\) in clusters or alone", text)] or [0]
+            clustered = [int(c) for c in
+                         re.findall(r"(\d+) particle\(s\) in clusters or alone", text)] or [0]
             row[name] = {"us_per_particle_step": 1e6 * (cpu[39] - cpu[9]) / (30 * row["N"]),
                          "peak_rss_MB": rss / 1024, "max_clustered": max(clustered),
                          "outside_pipe_reports": text.count("outside the pipe")}
