@@ -253,6 +253,22 @@ void fillBox(GranularSystem& s, double L, int n, double R, double rho, unsigned 
     for (const Grain& q : placed) s.addGrain(q);
 }
 
+// 300 grains of radius 0.7 R .. R (glass) at random in a closed box of side
+// L, moving at random, no gravity; the walls and the pairs of one law
+struct BoxOfGrains
+{
+    static constexpr double L = 0.1, R = 0.006;
+    Box box;
+    GranularSystem s;
+    BoxOfGrains(const HertzMindlin& l, bool rotation, unsigned seed)
+    :
+        box(L), s(l, l, Vector::Zero(), rotation)
+    {
+        for (const auto& f : box.faces) s.addWall(*f);
+        fillBox(s, L, 300, R, rhoGlass, seed);
+    }
+};
+
 } // namespace
 
 // Pair forces are equal and opposite: the grains' momentum changes only by
@@ -260,12 +276,8 @@ void fillBox(GranularSystem& s, double L, int n, double R, double rho, unsigned 
 // (frictional, inelastic, rotating: every term of the law).
 TEST(GranularSystem, PairsConserveMomentum)
 {
-    const double L = 0.1, R = 0.006;
-    const HertzMindlin l = law(glass, glass, 0.5, 0.4, 0.5);
-    GranularSystem s(l, l, Vector::Zero(), true);
-    Box box(L);
-    for (const auto& f : box.faces) s.addWall(*f);
-    fillBox(s, L, 300, R, rhoGlass, 7);
+    BoxOfGrains scene(law(glass, glass, 0.5, 0.4, 0.5), true, 7);
+    GranularSystem& s = scene.s;
     const Vector p0 = s.momentum();
     double scale = 0.0;
     for (const Grain& q : s.grains()) scale += q.mass*q.v.norm();
@@ -283,12 +295,10 @@ TEST(GranularSystem, PairsConserveMomentum)
 // (dt/t_c)^2, here dt = t_c/100.
 TEST(GranularSystem, ElasticFrictionlessContactsConserveEnergy)
 {
-    const double L = 0.1, R = 0.006;
     const HertzMindlin l = law(glass, glass, 1.0, 0.0);
-    GranularSystem s(l, l, Vector::Zero(), false);
-    Box box(L);
-    for (const auto& f : box.faces) s.addWall(*f);
-    fillBox(s, L, 300, R, rhoGlass, 11);
+    BoxOfGrains scene(l, false, 11);
+    GranularSystem& s = scene.s;
+    const double R = BoxOfGrains::R;
     const double e0 = s.energy();
     // contact time at the largest relative speed (2 sqrt 3 m/s), smallest grain
     const double Rmin = 0.7*R, mmin = sphereMass(Rmin, rhoGlass);
@@ -690,12 +700,10 @@ TEST(ContactEnergy, ObliqueSlidingImpactLosesTheTalliedEnergy)
 // elastic energy is 0 and the loss equals the tallies.
 TEST(ContactEnergy, BoxOfGrainsLosesTheTalliedEnergy)
 {
-    const double L = 0.1, R = 0.006;
     const HertzMindlin l = law(glass, glass, 0.5, 0.4, 0.5);
-    GranularSystem s(l, l, Vector::Zero(), true);
-    Box box(L);
-    for (const auto& f : box.faces) s.addWall(*f);
-    fillBox(s, L, 300, R, rhoGlass, 5);
+    BoxOfGrains scene(l, true, 5);
+    GranularSystem& s = scene.s;
+    const double R = BoxOfGrains::R;
     const double e0 = s.kineticEnergy();
     const double Rmin = 0.7*R, mmin = sphereMass(Rmin, rhoGlass);
     const double tc = hertz(l.equivalentYoungModulus(), Rmin/2, mmin/2, 2*std::sqrt(3.0)).duration;
