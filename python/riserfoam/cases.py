@@ -354,10 +354,20 @@ def wall_contacts(case):
 
 # ------------------------------------------------- the computed carrier
 
+# the coupled cases' particle forces: drag without a voidage function, the
+# fluid stress (the pressure gradient's share, Anderson & Jackson's model A),
+# the riser frame's force and the buoyant weight
+COUPLED_FORCES = """        wallCorrectedDrag { law continuous; }
+        riserFluidStress;
+        riserFrame;
+        gravity;"""
+
+
 def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.01,
                       A=0.0, f=0.0, phi0=0.0, frame="riser", drive="", dt=100.0, end=4000.0,
                       U0=(0.0, 0.0, 0.0), nCorrectors=2, injection="", coupled=False,
-                      write_every=None, kernel="type none;"):
+                      write_every=None, kernel="type none;", forces=None, collision=None,
+                      E=6e10):
     """A periodic riser section for riserCoupledFoam: the O-grid (n across
     the core, nz along L), a laminar carrier (nu, rho), at rest at the start
     unless U0; riserProperties of diameter D, uCentre, amplitude A [m],
@@ -365,8 +375,10 @@ def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.
     with the riser, riserOscillation) and the drive's entries drive (text);
     the riser cloud with the injectors injection (text), coupled true
     or false and the coarse-particle kernel's entries kernel (text; the
-    default, type none, the one-cell deposit); written every write_every
-    steps (default: at the end)."""
+    default, type none, the one-cell deposit); the particle forces forces
+    (text, default COUPLED_FORCES) and the collision model collision (text,
+    default none); the ores' Young's modulus E [Pa]; written every
+    write_every steps (default: at the end)."""
     dynamic = frame == "lab" and A * f > 0
     shutil.rmtree(case, ignore_errors=True)
     os.makedirs(os.path.join(case, "system"))
@@ -451,15 +463,12 @@ solution
     interpolationSchemes { rho cell; U cellPoint; mu cell; }
     integrationSchemes { U Euler; }
 }
-constantProperties { rho0 2000; youngsModulus 6e10; poissonsRatio 0.26; alphaMax 0.6; }
+constantProperties { rho0 2000; youngsModulus %r; poissonsRatio 0.26; alphaMax 0.6; }
 subModels
 {
     particleForces
     {
-        wallCorrectedDrag { law continuous; }
-        riserFluidStress;
-        riserFrame;
-        gravity;
+%s
     }
     injectionModels
     {
@@ -470,11 +479,12 @@ subModels
     standardWallInteractionCoeffs { type rebound; }
     surfaceFilmModel none;
     stochasticCollisionModel none;
-    collisionModel none;
+%s
 }
 cloudFunctions {}
 kernel { %s }
-""" % ("true" if coupled else "false", injection, kernel))
+""" % ("true" if coupled else "false", E, forces or COUPLED_FORCES, injection,
+       collision or "    collisionModel none;", kernel))
     wall = "movingWallVelocity" if dynamic else "noSlip"
     ff.write_dictionary(os.path.join(case, "0/U"), """
 dimensions [0 1 -1 0 0 0 0];

@@ -1,0 +1,241 @@
+"""Homogeneous suspensions of ores in a periodic riser section, computed by
+riserCoupledFoam: the case (ores filled at a solids fraction, the carrier's
+flow rate held by the drive, the coarse-particle kernel, contacts), what is
+measured from it (the mean slip, the pressure gradient, the solids
+fraction), and the closed forms it is compared with: the terminal velocity
+of a drag law and the hindered-settling correlations of Richardson & Zaki
+(1954) and Garside & Al-Dibouni (1977).
+
+Slip form. In a suspension at voidage eps = 1 - C_v the correlations give
+the superficial velocity U = u_i eps^n (fluidisation: the fluid's flow rate
+over the column's area with the particles at rest; batch settling: the
+particles' speed where the volume flux of the mixture is zero). Either way
+the particles' mean velocity relative to the carrier's interstitial mean
+velocity (the slip) is U / eps:
+    u_s = u_i eps^(n - 1).
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+import math
+import os
+
+from . import cases, foamfields, tables
+
+G, RHO_F, NU = 9.81, 1000.0, 1e-6
+
+
+# ------------------------------------------------- closed forms
+
+def wen_yu_cdre(Re):
+    """C_D Re of the single sphere in the drag law of Wen & Yu (1966) as
+    the stock WenYuDrag writes it: Schiller & Naumann (1933) below
+    Re = 1000, Newton's C_D = 0.44 above"""
+    return 0.44 * Re if Re > 1000.0 else 24.0 * (1.0 + 0.15 * Re ** 0.687)
+
+
+def _root(f, lo, hi):
+    """the root of f, increasing from f(lo) < 0 to f(hi) > 0, by bisection
+    to the last bit"""
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if f(mid) < 0 else (lo, mid)
+    return 0.5 * (lo + hi)
+
+
+def slip_wen_yu(d, rho_p, eps=1.0, rho=RHO_F, nu=NU, g=G):
+    """The slip at which the Wen & Yu drag on an ore in a homogeneous
+    suspension at voidage eps carries its buoyant weight,
+        (pi d mu / 8) (C_D Re)(eps Re) eps^-3.65 u_s = (rho_p - rho) g pi d^3 / 6,
+    Re = u_s d / nu (the drag of WenYuDrag, which holds the pressure
+    gradient's share too: no fluid stress force with it); eps = 1 gives
+    the terminal velocity u_t of the single ore in unbounded fluid"""
+    mu = rho * nu
+    weight = (rho_p - rho) * g * math.pi * d ** 3 / 6
+    return _root(lambda u: math.pi * d * mu / 8 * wen_yu_cdre(eps * u * d / nu)
+                 * eps ** -3.65 * u - weight, 0.0, 100.0)
+
+
+def n_richardson_zaki(Re_t, a):
+    """Richardson & Zaki's (1954) exponent n(Re_t, d/D = a)"""
+    if Re_t < 0.2:
+        return 4.65 + 19.5 * a
+    if Re_t < 1:
+        return (4.35 + 17.5 * a) * Re_t ** -0.03
+    if Re_t < 200:
+        return (4.45 + 18 * a) * Re_t ** -0.1
+    if Re_t < 500:
+        return 4.45 * Re_t ** -0.1
+    return 2.39
+
+
+def richardson_zaki(eps, Re_t, a):
+    """u_s / u_t of Richardson & Zaki (1954), slip form, u_t the terminal
+    velocity in unbounded fluid: u_i = u_t 10^(-d/D) (their wall
+    correction, log10 u_i = log10 u_t - d/D) and n(Re_t, d/D)"""
+    return 10 ** -a * eps ** (n_richardson_zaki(Re_t, a) - 1)
+
+
+def n_garside_al_dibouni(Re_t):
+    """Garside & Al-Dibouni's (1977) exponent: (5.1 - n)/(n - 2.7) = 0.1 Re_t^0.9"""
+    x = 0.1 * Re_t ** 0.9
+    return (5.1 + 2.7 * x) / (1 + x)
+
+
+def garside_al_dibouni(eps, Re_t):
+    """u_s / u_t of Garside & Al-Dibouni (1977), slip form, u_i = u_t"""
+    return eps ** (n_garside_al_dibouni(Re_t) - 1)
+
+
+# the least width of the band between the two correlations, over its
+# midpoint: where they cross, the band is taken 5 % wide about its middle
+BAND_FLOOR = 0.05
+
+
+def band_excess(value, bounds):
+    """How far value lies outside the band [min(bounds), max(bounds)], over
+    its width (0 inside); the width is at least BAND_FLOOR of the band's
+    midpoint. Returns (excess, width, floored)"""
+    lo, hi = min(bounds), max(bounds)
+    width = max(hi - lo, BAND_FLOOR * 0.5 * (lo + hi))
+    return max(lo - value, value - hi, 0.0) / width, width, width > hi - lo
+
+
+# ------------------------------------------------- the case
+
+# the drag of Wen & Yu (1966) as the stock WenYuDrag writes it: the single
+# sphere's drag at the superficial slip times eps^-4.65 (per ore; eps^-3.65
+# in the form of Anderson & Jackson's model A, divided by eps): it holds the
+# pressure gradient's share, so it goes without the fluid stress force
+WEN_YU_FORCES = """        WenYuDrag { alphac alphac; }
+        riserFrame;
+        gravity;"""
+
+CONTACTS = """    collisionModel riserWallContact;
+    riserWallContactCoeffs
+    {
+        wall { youngsModulus 2e11; poissonsRatio 0.3; }
+        normalRestitution 0.76; tangentialRestitution 0.7; friction 0.2;
+        normalForce tensionAllowed; rotation off; stepsPerContact 10;
+        pairs { normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }
+    }"""
+
+
+def settling_case(case, d, D, L, n, nz, cv, dt, end, write_every, kernel, seed=1,
+                  rho_p=2000.0, E=1e8, forces=WEN_YU_FORCES, collision=CONTACTS, wall="slip"):
+    """A periodic riser section (O-grid of n cells across the core, nz
+    along L) filled with ores of diameter d at the solids fraction cv
+    (riserFill, at rest with the carrier), water at rest, the carrier's
+    flow rate held at zero by the drive, a slip wall (no wall friction on
+    the carrier); the ores' forces (default: the Wen & Yu drag and the
+    buoyant weight), contacts (default: riserWallContact with pairs, ores
+    of Young's modulus E) and kernel (text of the kernel's entries);
+    written every write_every steps"""
+    injection = """
+        ores
+        {
+            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
+            solidsFraction %r; seed %d; velocity carrier;
+            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
+        }""" % (cv, seed, d)
+    cases.coupled_pipe_case(case, n, nz, L=L, D=D, nu=NU, rho=RHO_F, dt=dt, end=end,
+                            drive="bulkVelocity 0;", coupled=True, write_every=write_every,
+                            injection=injection, kernel=kernel, forces=forces,
+                            collision=collision, E=E)
+    if wall == "slip":
+        foamfields.edit(os.path.join(case, "0/U"), r"riserWall \{[^}]*\}",
+                        "riserWall { type slip; }")
+    foamfields.edit(os.path.join(case, "constant/kinematicCloudProperties"),
+                    r"rho0 2000;", "rho0 %r;" % rho_p)
+    return case
+
+
+def solve(case):
+    """riserCoupledFoam, then the cell volumes at the last time"""
+    cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
+    cases.run(["postProcess", "-func", "writeCellVolumes", "-latestTime", "-case", case],
+              os.path.join(case, "log.writeCellVolumes"))
+    return case
+
+
+def _times(case):
+    """the written times of case, ascending"""
+    found = []
+    for name in os.listdir(case):
+        try:
+            found.append((float(name), name))
+        except ValueError:
+            pass
+    return sorted(found)
+
+
+def measure(case, t0, rho_p=2000.0, rho=RHO_F, g=G):
+    """Over the written times after t0: the solids fraction C_v (the ores'
+    volume over the mesh's), the ores' mean axial velocity w (the mean over
+    the times of the mean over the ores), the carrier's interstitial mean
+    axial velocity u_b / (1 - C_v) (u_b the drive's bulk velocity, the
+    carrier's flow rate over the area), the slip u_s = that minus w, the
+    drive's -dp/dz averaged over (t0, end] and the same over the ores'
+    buoyant weight per volume, C_v (rho_p - rho) g; the ores' count; the
+    RMS over the cells (volume-weighted) of the carrier's axial velocity at
+    the end, a measure of the structure the suspension has developed. Also
+    each time's (t, w) for the run's history."""
+    times = _times(case)
+    last = times[-1][1]
+    cells = foamfields.read_scalars(os.path.join(case, last, "V"), "internalField")
+    V = sum(cells)
+    Uc = foamfields.read_vectors(os.path.join(case, last, "U"), "internalField")
+    uzRms = math.sqrt(sum(u[2] ** 2 * v for u, v in zip(Uc, cells)) / V)
+    history = []
+    for t, name in times:
+        path = os.path.join(case, name, "lagrangian/kinematicCloud/U")
+        if t > 0 and os.path.exists(path):
+            Up = foamfields.read_vectors(path)
+            history.append((t, sum(u[2] for u in Up) / len(Up), len(Up)))
+    count = history[-1][2]
+    diameter = float(foamfields.read_scalars(
+        os.path.join(case, last, "lagrangian/kinematicCloud/d"))[0])
+    cv = count * math.pi / 6 * diameter ** 3 / V
+    w = [h[1] for h in history if h[0] > t0]
+    w_mean = sum(w) / len(w)
+    drive = tables.read(os.path.join(case, "postProcessing/riserDrive/0/drive.dat"))
+    window = drive["t"] > t0
+    ub = drive[drive.names[2]][window].mean()
+    dpdz = -drive["dpdz"][window].mean()
+    carrier = ub / (1 - cv)
+    return {"cv": cv, "count": count, "w": w_mean, "carrier": carrier, "slip": carrier - w_mean,
+            "dpdz": dpdz, "dpdzRatio": dpdz / (cv * (rho_p - rho) * g), "uzRms": uzRms,
+            "history": [(h[0], h[1]) for h in history]}
+
+
+# ------------------------------------------------- the hindered-settling scene
+
+# validation/hinderedSettling and the test hinderedSettling: ores of d = 1 mm
+# and 2000 kg/m^3 in a section of D = 25 mm (d/D = 0.04) and L = 10 mm,
+# core cells of h = d (10 across the core, 10 along), kernel width 6 d (more
+# than the largest cell, a ring cell at the wall), dt = 1 ms, no-slip wall;
+# measured after T0, when the ores have reached their hindered speed
+SCENE_D, SCENE_DIAMETER, SCENE_L, SCENE_CELLS, SCENE_RHO_P = 0.025, 0.001, 0.01, 10, 2000.0
+SCENE_DT, SCENE_T0 = 1e-3, 0.15
+SCENE_KERNEL = "type diffusion; width 6; widthUnit diameters;"
+
+
+def hindered_case(case, cv, end, forces=WEN_YU_FORCES):
+    """the hindered-settling scene at the solids fraction cv, run to end,
+    written every 10 steps"""
+    return settling_case(case, SCENE_DIAMETER, SCENE_D, SCENE_L, SCENE_CELLS, SCENE_CELLS, cv,
+                         SCENE_DT, end, 10, SCENE_KERNEL, rho_p=SCENE_RHO_P, forces=forces,
+                         wall="noSlip")
+
+
+def hindered_reference(cv):
+    """the closed forms at the achieved solids fraction cv of the scene:
+    {ut, Re_t, a (d/D), richardsonZaki, garsideAlDibouni, wenYu} (the last
+    three as u_s / u_t; wenYu the Wen & Yu balance of a homogeneous
+    suspension)"""
+    d, a = SCENE_DIAMETER, SCENE_DIAMETER / SCENE_D
+    ut = slip_wen_yu(d, SCENE_RHO_P)
+    Re_t = ut * d / NU
+    eps = 1 - cv
+    return {"ut": ut, "Re_t": Re_t, "a": a, "richardsonZaki": richardson_zaki(eps, Re_t, a),
+            "garsideAlDibouni": garside_al_dibouni(eps, Re_t),
+            "wenYu": slip_wen_yu(d, SCENE_RHO_P, eps) / ut}

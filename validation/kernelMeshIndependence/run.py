@@ -1,0 +1,142 @@
+"""Mesh independence of riserCoupledFoam's coarse-particle coupling: a
+hindered-settling suspension on core cells of h = 0.5, 1, 2 and 4 ore
+diameters at one kernel width.
+
+The scene of validation/hinderedSettling (riserfoam.suspension.settling_case:
+ores of d = 1 mm, 2000 kg/m^3, in water at rest, C_v = 0.1, the drive
+holding the carrier's flow rate at zero, no-slip wall, WenYuDrag and the
+buoyant weight, wall and pair contact) in a wider section, D = 40 mm,
+L = 8 mm (1,920 ores), so that the coarsest O-grid still has 4 cells
+across the core: n = 32, 16, 8, 4 cells across the core and 16, 8, 4, 2
+along, core cells cubes of h = 0.5, 1, 2, 4 mm (51,200 to 104 cells).
+The kernel { type diffusion; width 8; widthUnit diameters; } (b = 8 mm
+on every grid: it must be at least the largest cell, a ring cell of the
+coarsest grid, whose arc at the wall is pi D/16 = 7.9 mm). dt = 2 ms (an
+ore moves at most 0.4 of the finest cell in a step), 0.3 s, measured over
+(0.15, 0.3] s as in validation/hinderedSettling (riserfoam.suspension.measure):
+the slip u_s and -dp/dz over C_v (rho_p - rho_f) g.
+
+Requirement: between the finest grid (h = 0.5 d) and each other one, the
+slip and -dp/dz/(C_v (rho_p - rho_f) g) change by less than 5 %. For
+contrast, the one-cell deposit (kernel type none) on the grids of h = d
+and 4 d.
+
+usage: run.py [-endTime 0.3] [-j 2] [-scratch DIR] [-reuse]
+
+Writes results/kernelMeshIndependence.md and .json and
+../figures/kernelMeshIndependence.png.
+
+SPDX-License-Identifier: GPL-3.0-or-later
+"""
+import argparse
+import json
+import os
+import re
+from concurrent.futures import ThreadPoolExecutor
+
+from riserfoam import suspension as sus
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+ROOT = os.path.abspath(os.path.join(HERE, "../.."))
+d, D, L, CV, RHO_P = 0.001, 0.04, 0.008, 0.1, 2000.0
+DT, T0 = 2e-3, 0.15
+GRIDS = ((32, 16), (16, 8), (8, 4), (4, 2))
+KERNELS = {"diffusion": "type diffusion; width 8; widthUnit diameters;", "none": "type none;"}
+# the runs: (kernel, n, nz), the finest first (the longest)
+RUNS = [("diffusion", n, nz) for n, nz in GRIDS] + [("none", 16, 8), ("none", 4, 2)]
+
+
+def case_path(scratch, kernel, n):
+    return os.path.join(scratch, "%s_n%d" % (kernel, n))
+
+
+def run(scratch, kernel, n, nz, end):
+    case = case_path(scratch, kernel, n)
+    sus.settling_case(case, d, D, L, n, nz, CV, DT, end, 5, KERNELS[kernel], rho_p=RHO_P,
+                      wall="noSlip")
+    sus.solve(case)
+
+
+def cpu(case):
+    text = open(os.path.join(case, "log.riserCoupledFoam")).read()
+    return float(re.findall(r"ExecutionTime = ([-+0-9.eE]+) s", text)[-1])
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("-endTime", type=float, default=0.3)
+    ap.add_argument("-j", type=int, default=2)
+    ap.add_argument("-scratch", default=os.path.join(ROOT, "build/validation/kernelMeshIndependence"))
+    ap.add_argument("-reuse", action="store_true")
+    args = ap.parse_args()
+    os.makedirs(args.scratch, exist_ok=True)
+    if not args.reuse:
+        with ThreadPoolExecutor(max_workers=args.j) as pool:
+            list(pool.map(lambda r: run(args.scratch, r[0], r[1], r[2], args.endTime), RUNS))
+    rows = []
+    for kernel, n, nz in RUNS:
+        case = case_path(args.scratch, kernel, n)
+        m = sus.measure(case, T0, rho_p=RHO_P)
+        rows.append({"kernel": kernel, "n": n, "nz": nz, "h/d": 0.4 * D / n / d,
+                     "cells": (3 * n * n + 4 * n) * nz, "cv": m["cv"], "ores": m["count"],
+                     "slip": m["slip"], "dpdzRatio": m["dpdzRatio"], "cpu": cpu(case),
+                     "history": m["history"]})
+    finest = rows[0]
+    lines = ["| kernel | h/d | cells | ores | C_v | u_s [m/s] | change | "
+             "-dp/dz / (C_v (rho_p - rho_f) g) | change | CPU [s] |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        r["slipChange"] = r["slip"] / finest["slip"] - 1
+        r["dpdzChange"] = r["dpdzRatio"] / finest["dpdzRatio"] - 1
+        lines.append("| %s | %.2f | %d | %d | %.4f | %.5f | %+.2f %% | %.4f | %+.2f %% | %.0f |"
+                     % (r["kernel"], r["h/d"], r["cells"], r["ores"], r["cv"], r["slip"],
+                        100 * r["slipChange"], r["dpdzRatio"], 100 * r["dpdzChange"], r["cpu"]))
+    text = "\n".join(lines)
+    print(text)
+    kernelRows = [r for r in rows if r["kernel"] == "diffusion"]
+    worst = max(max(abs(r["slipChange"]), abs(r["dpdzChange"])) for r in kernelRows)
+    verdict = "largest change with the kernel: %.2f %% (requirement: below 5 %%): %s" % (
+        100 * worst, "met" if worst < 0.05 else "NOT met")
+    print(verdict)
+    results = os.path.join(HERE, "results")
+    os.makedirs(results, exist_ok=True)
+    with open(os.path.join(results, "kernelMeshIndependence.md"), "w") as out:
+        out.write("d = %g m, D = %g m, L = %g m, C_v = %g, kernel width 8 d; window (%g, %g] s, "
+                  "changes against h/d = 0.5 with the kernel\n\n%s\n\n%s\n"
+                  % (d, D, L, CV, T0, args.endTime, text, verdict))
+    with open(os.path.join(results, "kernelMeshIndependence.json"), "w") as out:
+        json.dump([{k: v for k, v in r.items() if k != "history"} for r in rows], out, indent=1)
+
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    fig, (ax, bx) = plt.subplots(1, 2, figsize=(11, 4.5))
+    for kernel, style in (("diffusion", "C3o-"), ("none", "C0s--")):
+        pts = [r for r in rows if r["kernel"] == kernel]
+        label = "kernel width 8 d" if kernel == "diffusion" else "one-cell deposit (type none)"
+        ax.plot([r["h/d"] for r in pts], [100 * r["slipChange"] for r in pts], style,
+                label=label)
+        ax.plot([r["h/d"] for r in pts], [100 * r["dpdzChange"] for r in pts], style[:2] + ":",
+                mfc="none", label=label + ": -dp/dz")
+    ax.axhspan(-5, 5, color="0.9", label="requirement +-5 %")
+    ax.set_xscale("log", base=2)
+    ax.set_xlabel("h / d (core cell over ore diameter)")
+    ax.set_ylabel("change against h = 0.5 d with the kernel [%]")
+    ax.set_title("slip (filled) and -dp/dz (open), C_v = 0.1")
+    ax.legend(fontsize=8)
+    ax.grid(alpha=0.3)
+    for r in rows:
+        t, w = zip(*r["history"])
+        bx.plot(t, [-x for x in w], "-" if r["kernel"] == "diffusion" else "--", lw=1,
+                label="%s, h = %.1f d" % (r["kernel"], r["h/d"]))
+    bx.axvspan(T0, args.endTime, color="0.92")
+    bx.set_xlabel("t [s]")
+    bx.set_ylabel("-w [m/s] (ores' mean axial velocity)")
+    bx.legend(fontsize=8)
+    bx.grid(alpha=0.3)
+    fig.tight_layout()
+    fig.savefig(os.path.join(ROOT, "validation/figures/kernelMeshIndependence.png"), dpi=110)
+
+
+if __name__ == "__main__":
+    main()
