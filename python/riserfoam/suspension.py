@@ -33,6 +33,20 @@ def wen_yu_cdre(Re):
     return 0.44 * Re if Re > 1000.0 else 24.0 * (1.0 + 0.15 * Re ** 0.687)
 
 
+def clift_gauvin_cdre(Re):
+    """C_D Re of the standard drag curve of Clift & Gauvin (1970), the
+    unbounded limit of wallCorrectedDrag's law continuous"""
+    return 24.0 * (1.0 + 0.15 * Re ** 0.687) + 0.42 * Re / (1.0 + 42500.0 * Re ** -1.16)
+
+
+def terminal_velocity(d, rho_p, cdre, rho=RHO_F, nu=NU, g=G):
+    """The terminal velocity in unbounded fluid of a sphere whose drag has
+    C_D Re = cdre(Re)"""
+    mu = rho * nu
+    weight = (rho_p - rho) * g * math.pi * d ** 3 / 6
+    return _root(lambda u: math.pi * d * mu / 8 * cdre(u * d / nu) * u - weight, 0.0, 100.0)
+
+
 def _root(f, lo, hi):
     """the root of f, increasing from f(lo) < 0 to f(hi) > 0, by bisection
     to the last bit"""
@@ -207,33 +221,49 @@ def measure(case, t0, rho_p=2000.0, rho=RHO_F, g=G):
             "history": [(h[0], h[1]) for h in history]}
 
 
-# ------------------------------------------------- the hindered-settling scene
+# ------------------------------------------------- the hindered-settling scenes
 
-# validation/hinderedSettling and the test hinderedSettling: ores of d = 1 mm
-# and 2000 kg/m^3 in a section of D = 25 mm (d/D = 0.04) and L = 10 mm,
-# core cells of h = d (10 across the core, 10 along), kernel width 6 d (more
-# than the largest cell, a ring cell at the wall), dt = 1 ms, no-slip wall;
-# measured after T0, when the ores have reached their hindered speed
-SCENE_D, SCENE_DIAMETER, SCENE_L, SCENE_CELLS, SCENE_RHO_P = 0.025, 0.001, 0.01, 10, 2000.0
-SCENE_DT, SCENE_T0 = 1e-3, 0.15
-SCENE_KERNEL = "type diffusion; width 6; widthUnit diameters;"
+# validation/hinderedSettling and the test hinderedSettling, two scenes,
+# each of core cells of h = d, in water, ores of 2000 kg/m^3, dt = 1 ms,
+# no-slip wall, measured over (t0, end], after the ores have reached their
+# hindered speed:
+# - "1mm": ores of d = 1 mm in a section of D = 25 mm (d/D = 0.04) and
+#   L = 10 mm, 10 cells across the core and along, kernel width 6 d (more
+#   than the largest cell, a ring cell at the wall);
+# - "10mm": the riser's ore, d = 10 mm, in D = 0.1 m (d/D = 0.1) and
+#   L = 0.1 m, 4 cells across the core, 10 along, kernel width 3 d (a ring
+#   cell's arc at the wall is 20 mm; 6 d would smear the whole section)
+SCENES = {
+    "1mm": {"d": 0.001, "D": 0.025, "L": 0.01, "n": 10, "nz": 10, "width": 6,
+            "t0": 0.15, "end": 0.45},
+    "10mm": {"d": 0.01, "D": 0.1, "L": 0.1, "n": 4, "nz": 10, "width": 3,
+             "t0": 0.3, "end": 0.9},
+}
+SCENE_RHO_P, SCENE_DT = 2000.0, 1e-3
 
 
-def hindered_case(case, cv, end, forces=WEN_YU_FORCES):
-    """the hindered-settling scene at the solids fraction cv, run to end,
-    written every 10 steps"""
-    return settling_case(case, SCENE_DIAMETER, SCENE_D, SCENE_L, SCENE_CELLS, SCENE_CELLS, cv,
-                         SCENE_DT, end, 10, SCENE_KERNEL, rho_p=SCENE_RHO_P, forces=forces,
-                         wall="noSlip")
+def hindered_case(case, cv, end, forces=WEN_YU_FORCES, scene="1mm"):
+    """the hindered-settling scene (a key of SCENES) at the solids fraction
+    cv, run to end, written every 10 steps"""
+    sc = SCENES[scene]
+    kernel = "type diffusion; width %d; widthUnit diameters;" % sc["width"]
+    return settling_case(case, sc["d"], sc["D"], sc["L"], sc["n"], sc["nz"], cv, SCENE_DT, end,
+                         10, kernel, rho_p=SCENE_RHO_P, forces=forces, wall="noSlip")
 
 
-def hindered_reference(cv):
+# the single sphere's drag of each drag law of the scenes
+SINGLE_SPHERE = {"WenYuDrag": wen_yu_cdre, "wallCorrectedDrag": clift_gauvin_cdre}
+
+
+def hindered_reference(cv, scene="1mm", drag="WenYuDrag"):
     """the closed forms at the achieved solids fraction cv of the scene:
     {ut, Re_t, a (d/D), richardsonZaki, garsideAlDibouni, wenYu} (the last
     three as u_s / u_t; wenYu the Wen & Yu balance of a homogeneous
-    suspension)"""
-    d, a = SCENE_DIAMETER, SCENE_DIAMETER / SCENE_D
-    ut = slip_wen_yu(d, SCENE_RHO_P)
+    suspension), u_t the terminal velocity in unbounded water by the single
+    sphere's drag of the drag law drag (a key of SINGLE_SPHERE)"""
+    d = SCENES[scene]["d"]
+    a = d / SCENES[scene]["D"]
+    ut = terminal_velocity(d, SCENE_RHO_P, SINGLE_SPHERE[drag])
     Re_t = ut * d / NU
     eps = 1 - cv
     return {"ut": ut, "Re_t": Re_t, "a": a, "richardsonZaki": richardson_zaki(eps, Re_t, a),

@@ -8,7 +8,7 @@ holding the carrier's flow rate at zero, no-slip wall, WenYuDrag and the
 buoyant weight, wall and pair contact) in a wider section, D = 40 mm,
 L = 8 mm (1,920 ores), so that the coarsest O-grid still has 4 cells
 across the core: n = 32, 16, 8, 4 cells across the core and 16, 8, 4, 2
-along, core cells cubes of h = 0.5, 1, 2, 4 mm (51,200 to 104 cells).
+along, core cells cubes of h = 0.5, 1, 2, 4 mm (51,200 to 128 cells).
 The kernel { type diffusion; width 8; widthUnit diameters; } (b = 8 mm
 on every grid: it must be at least the largest cell, a ring cell of the
 coarsest grid, whose arc at the wall is pi D/16 = 7.9 mm). dt = 2 ms (an
@@ -66,7 +66,8 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("-endTime", type=float, default=0.3)
     ap.add_argument("-j", type=int, default=2)
-    ap.add_argument("-scratch", default=os.path.join(ROOT, "build/validation/kernelMeshIndependence"))
+    ap.add_argument("-scratch",
+                    default=os.path.join(ROOT, "build/validation/kernelMeshIndependence"))
     ap.add_argument("-reuse", action="store_true")
     args = ap.parse_args()
     os.makedirs(args.scratch, exist_ok=True)
