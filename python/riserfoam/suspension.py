@@ -22,6 +22,7 @@ import os
 from . import cases, foamfields, tables
 
 G, RHO_F, NU = 9.81, 1000.0, 1e-6
+ORE_DENSITY = 2000.0    # the ores of cases.coupled_pipe_case [kg/m^3]
 
 
 # ------------------------------------------------- closed forms
@@ -63,10 +64,8 @@ def slip_wen_yu(d, rho_p, eps=1.0, rho=RHO_F, nu=NU, g=G):
     Re = u_s d / nu (the drag of WenYuDrag, which holds the pressure
     gradient's share too: no fluid stress force with it); eps = 1 gives
     the terminal velocity u_t of the single ore in unbounded fluid"""
-    mu = rho * nu
-    weight = (rho_p - rho) * g * math.pi * d ** 3 / 6
-    return _root(lambda u: math.pi * d * mu / 8 * wen_yu_cdre(eps * u * d / nu)
-                 * eps ** -3.65 * u - weight, 0.0, 100.0)
+    return terminal_velocity(d, rho_p, lambda Re: wen_yu_cdre(eps * Re) * eps ** -3.65,
+                             rho, nu, g)
 
 
 def n_richardson_zaki(Re_t, a):
@@ -135,15 +134,15 @@ CONTACTS = """    collisionModel riserWallContact;
 
 
 def settling_case(case, d, D, L, n, nz, cv, dt, end, write_every, kernel, seed=1,
-                  rho_p=2000.0, E=1e8, forces=WEN_YU_FORCES, collision=CONTACTS, wall="slip"):
+                  E=1e8, forces=WEN_YU_FORCES, collision=CONTACTS):
     """A periodic riser section (O-grid of n cells across the core, nz
-    along L) filled with ores of diameter d at the solids fraction cv
-    (riserFill, at rest with the carrier), water at rest, the carrier's
-    flow rate held at zero by the drive, a slip wall (no wall friction on
-    the carrier); the ores' forces (default: the Wen & Yu drag and the
-    buoyant weight), contacts (default: riserWallContact with pairs, ores
-    of Young's modulus E) and kernel (text of the kernel's entries);
-    written every write_every steps"""
+    along L) filled with ores of diameter d and ORE_DENSITY at the solids
+    fraction cv (riserFill, at rest with the carrier), water at rest, the
+    carrier's flow rate held at zero by the drive, no-slip wall; the ores'
+    forces (default: the Wen & Yu drag and the buoyant weight), contacts
+    (default: riserWallContact with pairs, ores of Young's modulus E) and
+    kernel (text of the kernel's entries); written every write_every
+    steps"""
     injection = """
         ores
         {
@@ -155,11 +154,6 @@ def settling_case(case, d, D, L, n, nz, cv, dt, end, write_every, kernel, seed=1
                             drive="bulkVelocity 0;", coupled=True, write_every=write_every,
                             injection=injection, kernel=kernel, forces=forces,
                             collision=collision, E=E)
-    if wall == "slip":
-        foamfields.edit(os.path.join(case, "0/U"), r"riserWall \{[^}]*\}",
-                        "riserWall { type slip; }")
-    foamfields.edit(os.path.join(case, "constant/kinematicCloudProperties"),
-                    r"rho0 2000;", "rho0 %r;" % rho_p)
     return case
 
 
@@ -182,7 +176,7 @@ def _times(case):
     return sorted(found)
 
 
-def measure(case, t0, rho_p=2000.0, rho=RHO_F, g=G):
+def measure(case, t0, rho_p=ORE_DENSITY, rho=RHO_F, g=G):
     """Over the written times after t0: the solids fraction C_v (the ores'
     volume over the mesh's), the ores' mean axial velocity w (the mean over
     the times of the mean over the ores), the carrier's interstitial mean
@@ -239,7 +233,7 @@ SCENES = {
     "10mm": {"d": 0.01, "D": 0.1, "L": 0.1, "n": 4, "nz": 10, "width": 3,
              "t0": 0.3, "end": 0.9},
 }
-SCENE_RHO_P, SCENE_DT = 2000.0, 1e-3
+SCENE_DT = 1e-3
 
 
 def hindered_case(case, cv, end, forces=WEN_YU_FORCES, scene="1mm"):
@@ -248,7 +242,7 @@ def hindered_case(case, cv, end, forces=WEN_YU_FORCES, scene="1mm"):
     sc = SCENES[scene]
     kernel = "type diffusion; width %d; widthUnit diameters;" % sc["width"]
     return settling_case(case, sc["d"], sc["D"], sc["L"], sc["n"], sc["nz"], cv, SCENE_DT, end,
-                         10, kernel, rho_p=SCENE_RHO_P, forces=forces, wall="noSlip")
+                         10, kernel, forces=forces)
 
 
 # the single sphere's drag of each drag law of the scenes
@@ -263,9 +257,9 @@ def hindered_reference(cv, scene="1mm", drag="WenYuDrag"):
     sphere's drag of the drag law drag (a key of SINGLE_SPHERE)"""
     d = SCENES[scene]["d"]
     a = d / SCENES[scene]["D"]
-    ut = terminal_velocity(d, SCENE_RHO_P, SINGLE_SPHERE[drag])
+    ut = terminal_velocity(d, ORE_DENSITY, SINGLE_SPHERE[drag])
     Re_t = ut * d / NU
     eps = 1 - cv
     return {"ut": ut, "Re_t": Re_t, "a": a, "richardsonZaki": richardson_zaki(eps, Re_t, a),
             "garsideAlDibouni": garside_al_dibouni(eps, Re_t),
-            "wenYu": slip_wen_yu(d, SCENE_RHO_P, eps) / ut}
+            "wenYu": slip_wen_yu(d, ORE_DENSITY, eps) / ut}

@@ -109,7 +109,7 @@ def cpu(case):
 
 def evaluate(scratch, scene, drag, cv):
     case = case_path(scratch, scene, drag, cv)
-    m = sus.measure(case, sus.SCENES[scene]["t0"], rho_p=sus.SCENE_RHO_P)
+    m = sus.measure(case, sus.SCENES[scene]["t0"])
     ref = sus.hindered_reference(m["cv"], scene, drag)
     rz, gad = ref["richardsonZaki"], ref["garsideAlDibouni"]
     ratio = m["slip"] / ref["ut"]
@@ -152,7 +152,7 @@ def plot(rows, figure):
         gad = np.array([sus.garside_al_dibouni(1 - c, Re_t) for c in cv])
         lo, hi = np.minimum(rz, gad), np.maximum(rz, gad)
         width = np.maximum(hi - lo, sus.BAND_FLOOR * 0.5 * (lo + hi))
-        wy = [sus.slip_wen_yu(sus.SCENES[scene]["d"], sus.SCENE_RHO_P, 1 - c) / ut for c in cv]
+        wy = [sus.slip_wen_yu(sus.SCENES[scene]["d"], sus.ORE_DENSITY, 1 - c) / ut for c in cv]
         ax.fill_between(cv, lo - 0.15 * width, hi + 0.15 * width, color="0.88",
                         label="band + 15 % of its width")
         ax.plot(cv, rz, "C0-", label="Richardson & Zaki (n = %.3f, u_i = %.3f u_t)"

@@ -50,7 +50,7 @@ from riserfoam import suspension as sus
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "../.."))
-d, D, L, CV, RHO_P = 0.001, 0.04, 0.008, 0.1, 2000.0
+d, D, L, CV = 0.001, 0.04, 0.008, 0.1
 DT, T0 = 2e-3, 0.15
 GRIDS = ((32, 16), (16, 8), (8, 4), (4, 2))
 KERNELS = {"diffusion": "type diffusion; width 8; widthUnit diameters;", "none": "type none;"}
@@ -64,8 +64,7 @@ def case_path(scratch, kernel, n):
 
 def run(scratch, kernel, n, nz, end):
     case = case_path(scratch, kernel, n)
-    sus.settling_case(case, d, D, L, n, nz, CV, DT, end, 5, KERNELS[kernel], rho_p=RHO_P,
-                      wall="noSlip")
+    sus.settling_case(case, d, D, L, n, nz, CV, DT, end, 5, KERNELS[kernel])
     sus.solve(case)
 
 
@@ -89,8 +88,8 @@ def main():
     rows = []
     for kernel, n, nz in RUNS:
         case = case_path(args.scratch, kernel, n)
-        m = sus.measure(case, T0, rho_p=RHO_P)
-        balance = sus.slip_wen_yu(d, RHO_P, 1 - m["cv"])
+        m = sus.measure(case, T0)
+        balance = sus.slip_wen_yu(d, sus.ORE_DENSITY, 1 - m["cv"])
         rows.append({"kernel": kernel, "n": n, "nz": nz, "h/d": 0.4 * D / n / d,
                      "cells": (3 * n * n + 4 * n) * nz, "cv": m["cv"], "ores": m["count"],
                      "slip": m["slip"], "slipOverBalance": m["slip"] / balance,

@@ -49,7 +49,7 @@ from riserfoam.checks import Checks
 checks = Checks(width=70)
 END = 0.3
 case = sus.solve(sus.hindered_case(os.path.abspath("hindered"), 0.1, END))
-m = sus.measure(case, sus.SCENES["1mm"]["t0"], rho_p=sus.SCENE_RHO_P)
+m = sus.measure(case, sus.SCENES["1mm"]["t0"])
 ref = sus.hindered_reference(m["cv"])
 ratio = m["slip"] / ref["ut"]
 excess, width, floored = sus.band_excess(ratio, (ref["richardsonZaki"], ref["garsideAlDibouni"]))
