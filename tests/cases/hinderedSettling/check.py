@@ -36,7 +36,7 @@ unbounded), Re_t = 112, d/D = 0.04. Checked:
   without wall shear; the wall shear of the lateral structure and the
   ores' remaining acceleration are not in it). Measured 0.14 %.
 
-Run time 64 s (on 2 cores shared with another run).
+Run time 22 s alone, 64 s beside another solver run on the 2 cores.
 
 The figures are those measured when the test was written; the run prints
 its own.
