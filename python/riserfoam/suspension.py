@@ -263,3 +263,27 @@ def hindered_reference(cv, scene="1mm", drag="WenYuDrag"):
     return {"ut": ut, "Re_t": Re_t, "a": a, "richardsonZaki": richardson_zaki(eps, Re_t, a),
             "garsideAlDibouni": garside_al_dibouni(eps, Re_t),
             "wenYu": slip_wen_yu(d, ORE_DENSITY, eps) / ut}
+
+
+# ------------------------------------------------- the kernel's mesh scene
+
+# validation/kernelMeshIndependence and the test riserCoupledKernelCoarse:
+# the 1 mm ores of SCENES at C_v = 0.1 in a wider section, D = 40 mm and
+# L = 8 mm, so that an O-grid of 4 cells across the core has core cells of
+# h = 4 d; n cells across the core, n/2 along (core cells cubes of
+# h = 0.4 D / n); the kernel's width 8 d on every grid (it must be at least
+# the largest cell: the coarsest grid's ring cells span pi D/16 = 7.9 mm of
+# the wall); dt = 2 ms (an ore moves at most 0.4 of the finest cell,
+# h = 0.5 d, in a step); 0.3 s, measured over (0.15, 0.3] s
+MESH_SCENE = {"d": 0.001, "D": 0.04, "L": 0.008, "cv": 0.1, "dt": 2e-3, "t0": 0.15,
+              "end": 0.3}
+MESH_KERNELS = {"diffusion": "type diffusion; width 8; widthUnit diameters;",
+                "none": "type none;"}
+
+
+def mesh_case(case, n, kernel, end=MESH_SCENE["end"]):
+    """the kernel's mesh scene on the O-grid of n cells across the core with
+    the kernel kernel (a key of MESH_KERNELS), written every 5 steps"""
+    sc = MESH_SCENE
+    return settling_case(case, sc["d"], sc["D"], sc["L"], n, n // 2, sc["cv"], sc["dt"], end, 5,
+                         MESH_KERNELS[kernel])

@@ -2,10 +2,11 @@
 hindered-settling suspension on core cells of h = 0.5, 1, 2 and 4 ore
 diameters at one kernel width.
 
-The scene of validation/hinderedSettling (riserfoam.suspension.settling_case:
-ores of d = 1 mm, 2000 kg/m^3, in water at rest, C_v = 0.1, the drive
-holding the carrier's flow rate at zero, no-slip wall, WenYuDrag and the
-buoyant weight, wall and pair contact) in a wider section, D = 40 mm,
+The scene riserfoam.suspension.mesh_case, the 1 mm scene of
+validation/hinderedSettling (ores of d = 1 mm, 2000 kg/m^3, in water at
+rest, C_v = 0.1, the drive holding the carrier's flow rate at zero,
+no-slip wall, WenYuDrag and the buoyant weight, wall and pair contact)
+in a wider section, D = 40 mm,
 L = 8 mm (1,920 ores), so that the coarsest O-grid still has 4 cells
 across the core: n = 32, 16, 8, 4 cells across the core and 16, 8, 4, 2
 along, core cells cubes of h = 0.5, 1, 2, 4 mm (51,200 to 128 cells).
@@ -50,22 +51,18 @@ from riserfoam import suspension as sus
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "../.."))
-d, D, L, CV = 0.001, 0.04, 0.008, 0.1
-DT, T0 = 2e-3, 0.15
-GRIDS = ((32, 16), (16, 8), (8, 4), (4, 2))
-KERNELS = {"diffusion": "type diffusion; width 8; widthUnit diameters;", "none": "type none;"}
-# the runs: (kernel, n, nz), the finest first (the longest)
-RUNS = [("diffusion", n, nz) for n, nz in GRIDS] + [("none", 16, 8), ("none", 4, 2)]
+d, D, L, CV = (sus.MESH_SCENE[k] for k in ("d", "D", "L", "cv"))
+T0 = sus.MESH_SCENE["t0"]
+# the runs: (kernel, n cells across the core), the finest first (the longest)
+RUNS = [("diffusion", n) for n in (32, 16, 8, 4)] + [("none", 16), ("none", 4)]
 
 
 def case_path(scratch, kernel, n):
     return os.path.join(scratch, "%s_n%d" % (kernel, n))
 
 
-def run(scratch, kernel, n, nz, end):
-    case = case_path(scratch, kernel, n)
-    sus.settling_case(case, d, D, L, n, nz, CV, DT, end, 5, KERNELS[kernel])
-    sus.solve(case)
+def run(scratch, kernel, n, end):
+    sus.solve(sus.mesh_case(case_path(scratch, kernel, n), n, kernel, end))
 
 
 def cpu(case):
@@ -75,7 +72,7 @@ def cpu(case):
 
 def main():
     ap = argparse.ArgumentParser()
-    ap.add_argument("-endTime", type=float, default=0.3)
+    ap.add_argument("-endTime", type=float, default=sus.MESH_SCENE["end"])
     ap.add_argument("-j", type=int, default=2)
     ap.add_argument("-scratch",
                     default=os.path.join(ROOT, "build/validation/kernelMeshIndependence"))
@@ -84,14 +81,14 @@ def main():
     os.makedirs(args.scratch, exist_ok=True)
     if not args.reuse:
         with ThreadPoolExecutor(max_workers=args.j) as pool:
-            list(pool.map(lambda r: run(args.scratch, r[0], r[1], r[2], args.endTime), RUNS))
+            list(pool.map(lambda r: run(args.scratch, r[0], r[1], args.endTime), RUNS))
     rows = []
-    for kernel, n, nz in RUNS:
+    for kernel, n in RUNS:
         case = case_path(args.scratch, kernel, n)
         m = sus.measure(case, T0)
         balance = sus.slip_wen_yu(d, sus.ORE_DENSITY, 1 - m["cv"])
-        rows.append({"kernel": kernel, "n": n, "nz": nz, "h/d": 0.4 * D / n / d,
-                     "cells": (3 * n * n + 4 * n) * nz, "cv": m["cv"], "ores": m["count"],
+        rows.append({"kernel": kernel, "n": n, "h/d": 0.4 * D / n / d,
+                     "cells": (3 * n * n + 4 * n) * n // 2, "cv": m["cv"], "ores": m["count"],
                      "slip": m["slip"], "slipOverBalance": m["slip"] / balance,
                      "dpdzRatio": m["dpdzRatio"], "cpu": cpu(case),
                      "history": m["history"]})
