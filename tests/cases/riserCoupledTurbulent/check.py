@@ -23,7 +23,7 @@ dp/dz): in the log layer, where the wall function holds.
   Prandtl's smooth-pipe law 1/sqrt(lambda) = 2.0 log10(Re sqrt(lambda))
   - 0.8 (0.0180 at Re = 1e5; Blasius 0.316 Re^-1/4 = 0.0178): within 5 %
   (the requirement). Measured -3.1 % (-2.8, -3.4 % with 12, 24 cells
-  across: wall-cell y+ 57-74 and 27-37).
+  across: wall cells at y+ of about 53-68 and 26-36).
 - The mean profile in the log region, y+ >= 30 (the classical lower
   bound) and y/R <= 0.12 (the upper bound of the Superpipe's log law,
   McKeon et al. 2004, J. Fluid Mech. 501), every cell (all around the
