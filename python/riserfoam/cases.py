@@ -508,20 +508,25 @@ boundaryField
 """, "volScalarField")
 
 
-def coupled_pipe_kOmegaSST(case, ub, D=0.1):
-    """Make a coupled_pipe_case turbulent: kOmegaSST with wall functions
-    (k, omega, nut at the wall), its fields from a turbulence intensity
-    of 5 % of the bulk velocity ub and a length scale of 0.07 D, upwind
-    convection of k and omega; the carrier starts as a plug flow at ub."""
+def coupled_pipe_RAS(case, ub, D=0.1, model="kOmegaSST", nutWall="nutkWallFunction"):
+    """Make a coupled_pipe_case turbulent: the RAS model (kOmegaSST,
+    kEpsilon, realizableKE) with wall functions (k, omega or epsilon, and
+    nut by nutWall at the wall), its fields from a turbulence intensity of
+    5 % of the bulk velocity ub and a length scale l = 0.07 D (omega =
+    sqrt(k)/(Cmu^1/4 l), epsilon = Cmu^3/4 k^3/2 / l, Cmu = 0.09), upwind
+    convection of k and omega or epsilon; the carrier starts as a plug
+    flow at ub."""
     ff.write_dictionary(os.path.join(case, "constant/turbulenceProperties"),
-                        "simulationType RAS;\nRAS { RASModel kOmegaSST; turbulence on; "
-                        "printCoeffs off; }\n")
+                        "simulationType RAS;\nRAS { RASModel %s; turbulence on; "
+                        "printCoeffs off; }\n" % model)
     k = 1.5 * (0.05 * ub) ** 2
-    omega = k ** 0.5 / (0.09 ** 0.25 * 0.07 * D)
+    l = 0.07 * D
+    second = ("omega", "[0 0 -1 0 0 0 0]", k ** 0.5 / (0.09 ** 0.25 * l), "omegaWallFunction") \
+        if model == "kOmegaSST" else \
+        ("epsilon", "[0 2 -3 0 0 0 0]", 0.09 ** 0.75 * k ** 1.5 / l, "epsilonWallFunction")
     for name, dims, value, wall in (
-            ("k", "[0 2 -2 0 0 0 0]", k, "kqRWallFunction"),
-            ("omega", "[0 0 -1 0 0 0 0]", omega, "omegaWallFunction"),
-            ("nut", "[0 2 -1 0 0 0 0]", 0.0, "nutkWallFunction")):
+            ("k", "[0 2 -2 0 0 0 0]", k, "kqRWallFunction"), second,
+            ("nut", "[0 2 -1 0 0 0 0]", 0.0, nutWall)):
         ff.write_dictionary(os.path.join(case, "0", name), """
 dimensions %s;
 internalField uniform %r;
@@ -537,7 +542,7 @@ boundaryField
     schemes = os.path.join(case, "system/fvSchemes")
     ff.edit(schemes, r"^divSchemes .*$",
             "divSchemes           { default Gauss linear; div(alphaPhi,U) Gauss linearUpwind grad(U);"
-            " div(alphaPhi,k) Gauss upwind; div(alphaPhi,omega) Gauss upwind; }")
+            " div(alphaPhi,k) Gauss upwind; div(alphaPhi,%s) Gauss upwind; }" % second[0])
     with open(schemes, "a") as f:
         f.write("wallDist             { method meshWave; }\n")
-    ff.edit(os.path.join(case, "system/fvSolution"), r'"U\.\*"', '"(U|k|omega).*"')
+    ff.edit(os.path.join(case, "system/fvSolution"), r'"U\.\*"', '"(U|k|%s).*"' % second[0])

@@ -59,7 +59,9 @@ Description
     solver: riserProperties' 'carrier' is interpolated (the computed
     carrier is the mesh's); a periodic riser (cyclic ends) has a 'drive', a
     riser with other ends none; the cloud's alphaMax and its 'kernel'
-    sub-dictionary are given (particleCoupling.H). A cloud with
+    sub-dictionary are given (particleCoupling.H); the turbulence model's
+    fields are in the start time (else refused naming the model's entry
+    and the missing file). A cloud with
     coupled false is a one-way run on the computed carrier: allowed, and
     said in the log.
 

@@ -1,7 +1,10 @@
 """riserCoupledFoam's refusals: each bad input stops the run with an error
 naming the entry (and its allowed range), before the first step (among
 them a cloud without the coarse-particle kernel's sub-dictionary, which
-riserCoupledFoam requires, and a kernel out of its range); a cloud that
+riserCoupledFoam requires, and a kernel out of its range; a turbulence
+model whose field is missing from the start time, refused naming the
+model's entry and the field's file, and a misspelt simulationType,
+refused by OpenFOAM naming the entry and the allowed types); a cloud that
 is not coupled runs one-way and says so."""
 import os
 import shutil
@@ -20,6 +23,9 @@ for field, ends in (("U", "type noSlip;"), ("p", "type zeroGradient;")):
     for patch in ("bottom", "top"):
         foamfields.edit(os.path.join(open_riser, "0", field),
                         r"%s \{ type cyclic; \}" % patch, "%s { %s }" % (patch, ends))
+turbulent = os.path.abspath("turbulentBase")
+shutil.copytree(base, turbulent)
+cases.coupled_pipe_RAS(turbulent, 0.01)
 count = 0
 
 
@@ -37,11 +43,13 @@ def run(solver, edit, source=base):
     return status, open(os.path.join(case, "log")).read()
 
 
-def expect(label, text, edit, solver="riserCoupledFoam", source=base):
+def expect(label, text, edit, solver="riserCoupledFoam", source=base, io=False):
+    """the run stops (non-zero exit) with a line holding text (and, if io,
+    as a FatalIOError)"""
     global failures
     status, log = run(solver, edit, source)
     line = next((l.strip() for l in log.splitlines() if text in l), None)
-    if status != 0 and line:
+    if status != 0 and line and (not io or "FOAM FATAL IO ERROR" in log):
         print("ok: %s stops with: %s" % (label, line[:140]))
     else:
         print("FAILED: %s (exit %d) did not stop with '%s'\n%s" % (label, status, text, log[-1500:]))
@@ -91,6 +99,16 @@ expect("riserParcelFoam with a drive", "entry 'drive': riserParcelFoam imposes t
        lambda case: None, solver="riserParcelFoam")
 expect("riserParticle with a drive", "entry 'drive': riserParticle imposes the analytic carrier",
        lambda case: None, solver="riserParticle")
+for field in ("k", "omega", "nut"):
+    expect("kOmegaSST without 0/%s" % field,
+           "entry 'RASModel' = kOmegaSST (simulationType RAS): the model cannot be built from the"
+           " start time 0: cannot find file \"%s\"" % os.path.join(os.path.abspath("case%d" % (count + 1)),
+                                                            "0", field),
+           lambda case: os.remove(os.path.join(case, "0", field)), source=turbulent, io=True)
+expect("simulationType misspelt", "Unknown simulationType type RANS",
+       lambda case: foamfields.edit(os.path.join(case, "constant/turbulenceProperties"),
+                                    r"simulationType RAS;", "simulationType RANS;"),
+       source=turbulent, io=True)
 
 status, log = run("riserCoupledFoam", lambda case: None)
 if status == 0 and "The cloud is not coupled (coupled false)" in log:
