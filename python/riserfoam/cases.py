@@ -357,15 +357,19 @@ def wall_contacts(case):
 def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.01,
                       A=0.0, f=0.0, phi0=0.0, frame="riser", drive="", dt=100.0, end=4000.0,
                       U0=(0.0, 0.0, 0.0), nCorrectors=2, injection="", coupled=False,
-                      write_every=None, kernel="type none;"):
+                      write_every=None, kernel="type none;", contact=False,
+                      cloud_functions=""):
     """A periodic riser section for riserCoupledFoam: the O-grid (n across
     the core, nz along L), a laminar carrier (nu, rho), at rest at the start
-    unless U0; riserProperties of diameter D, uCentre, amplitude A [m],
-    frequency f [Hz], phase phi0, frame (riser or lab: then the mesh and the wall move
-    with the riser, riserOscillation) and the drive's entries drive (text);
-    the riser cloud with the injectors injection (text), coupled true
-    or false and the coarse-particle kernel's entries kernel (text; the
-    default, type none, the one-cell deposit); written every write_every
+    unless U0 (a velocity, or "poiseuille": the developed laminar flow of
+    uCentre, poiseuille_start); riserProperties of diameter D, uCentre,
+    amplitude A [m], frequency f [Hz], phase phi0, frame (riser or lab: then
+    the mesh and the wall move with the riser, riserOscillation) and the
+    drive's entries drive (text); the riser cloud with the injectors
+    injection (text), coupled true or false, the coarse-particle kernel's
+    entries kernel (text; the default, type none, the one-cell deposit),
+    wall contact (contact: the flagship's riserWallContact, else none) and
+    the cloud functions cloud_functions (text); written every write_every
     steps (default: at the end)."""
     dynamic = frame == "lab" and A * f > 0
     shutil.rmtree(case, ignore_errors=True)
@@ -470,11 +474,13 @@ subModels
     standardWallInteractionCoeffs { type rebound; }
     surfaceFilmModel none;
     stochasticCollisionModel none;
-    collisionModel none;
+%s
 }
-cloudFunctions {}
+cloudFunctions { %s }
 kernel { %s }
-""" % ("true" if coupled else "false", injection, kernel))
+""" % ("true" if coupled else "false", injection,
+       "    " + flagship_contact() if contact else "    collisionModel none;", cloud_functions,
+       kernel))
     wall = "movingWallVelocity" if dynamic else "noSlip"
     ff.write_dictionary(os.path.join(case, "0/U"), """
 dimensions [0 1 -1 0 0 0 0];
@@ -485,7 +491,7 @@ boundaryField
     bottom { type cyclic; }
     top { type cyclic; }
 }
-""" % (U0 + (wall,)), "volVectorField")
+""" % (((0.0, 0.0, 0.0) if U0 == "poiseuille" else tuple(U0)) + (wall,)), "volVectorField")
     ff.write_dictionary(os.path.join(case, "0/p"), """
 dimensions [0 2 -2 0 0 0 0];
 internalField uniform 0;
@@ -496,6 +502,42 @@ boundaryField
     top { type cyclic; }
 }
 """, "volScalarField")
+    if U0 == "poiseuille":
+        poiseuille_start(case, Riser(D, uCentre, A, f, phi0), frame, wall, rho * nu)
+
+
+def poiseuille_start(case, riser, frame, wall, mu):
+    """The developed laminar flow as the start of a coupled_pipe_case: 0/U
+    the Poiseuille flow of the riser (carrier.Riser: u_cm (1 - r^2/R^2)
+    at the cell centres, and in the lab frame the riser's velocity), the
+    wall at the riser's velocity, and the drive's gradient of that flow,
+    dp/dz = -16 mu u_cm / D^2 (-32 mu u_b / D^2, u_b = u_cm/2), in
+    0/uniform/riserDrive: the carrier starts steady (up to the O-grid's
+    discretisation error of the profile, riserCoupledPoiseuille)."""
+    run(["postProcess", "-func", "writeCellCentres", "-time", "0", "-case", case],
+        os.path.join(case, "log.writeCellCentres"))
+    centres = ff.read_vectors(os.path.join(case, "0", "C"), "internalField")
+    os.remove(os.path.join(case, "0", "C"))
+    ff.write_vector_field(
+        os.path.join(case, "0", "U"), centres,
+        {"riserWall": "type %s; value uniform (%r 0 0);"
+                      % (wall, riser.velocity(0.0) if frame == "lab" else 0.0),
+         "bottom": "type cyclic;", "top": "type cyclic;"},
+        lambda x, y, z: riser.carrier(x, y, z, 0.0, frame))
+    ff.write_dictionary(os.path.join(case, "0", "uniform", "riserDrive"),
+                        "dimensions [1 -2 -2 0 0 0 0];\nvalue %r;\n"
+                        % (-16 * mu * riser.u_cm / riser.D ** 2),
+                        "uniformDimensionedScalarField")
+
+
+def flagship_contact():
+    """The wall contact of the flagship tutorial (riser/oscillatingContact):
+    its collisionModel line and riserWallContactCoeffs block, as text"""
+    path = os.path.join(ROOT, "tutorials", "riser", "oscillatingContact", "constant",
+                        "kinematicCloudProperties")
+    text = open(path).read()
+    start = text.index("collisionModel")
+    return text[start:ff.matching(text, text.index("{", start)) + 1]
 
 
 def coupled_pipe_kOmegaSST(case, ub, D=0.1):
