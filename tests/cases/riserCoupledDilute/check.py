@@ -7,15 +7,15 @@ The flagship's ore (d = 10 mm, 2000 kg/m^3, released at (0.02, 0.02,
 1 m/s, A = 0.1 m, f = 3 Hz, riser frame, its wall contact; forces drag,
 fluid stress, buoyant weight and the frame force) on a computed laminar
 carrier: a periodic section L = 0.2 m (O-grid of 8 cells across the core,
-20 along), water, started as the Poiseuille flow of u_cm with the drive's
-gradient of that flow (cases.poiseuille_start: the carrier starts steady,
-and the riser frame's oscillation leaves it so, riserCoupledFrames), the
-drive at u_cm/2. One riser period, 1/3 s, dt = 0.5 ms; the ore touches
-the wall three times. Two runs for each kernel width b (kernel { type
-diffusion; width b; widthUnit diameters; }): coupled false (one-way: the
-particle's volume still enters alpha_c, the carrier's reaction is none)
-and coupled true; their lifting distances (riserParticleTable's lift)
-differ by the particle's reaction alone.
+20 along), water, started as the Poiseuille flow of u_cm at the drive's
+bulk velocity u_cm/2, with the drive's gradient of that flow
+(cases.poiseuille_start: the carrier starts steady, and the riser frame's
+oscillation leaves it so, riserCoupledFrames). One riser period, 1/3 s,
+dt = 0.5 ms; the ore touches the wall three times. Two runs for each
+kernel width b (kernel { type diffusion; width b; widthUnit diameters; }):
+coupled false (one-way: the particle's volume still enters alpha_c, the
+carrier's reaction is none) and coupled true; their lifting distances
+(riserParticleTable's lift) differ by the particle's reaction alone.
 
 Why they agree: the reaction takes from the carrier what the fluid
 forces give the ore, on average its buoyant weight W = (rho_p - rho_f) g
@@ -28,18 +28,22 @@ disturbance F/(3 pi^(3/2) rho_f nu b) of a spread point force, d/(sqrt(pi)
 b) of the slip, applies only at Re_p << 1 (and there it is not small: 19 %
 at b = 3d). Held about the ore over the run T, it slows its rise by
     Delta = W T^2 / (2 rho_f V_k),
-1.9 mm at b = 3d (3.5 % of the 54 mm lift) and 0.24 mm at b = 6d (0.45 %):
-below 1 % for b above 4.6 d, inside the riser for b up to 10 d. Checked:
+1.9 mm at b = 3d (3.6 % of the 53 mm lift) and 0.24 mm at b = 6d (0.45 %):
+below 1 % for b above 4.6 d, inside the riser for b up to 10 d. Two
+things move it, in opposite directions: the ore's slip (about 0.5 m/s)
+carries it partly out of the fluid it pushed, and the discrete kernel (4
+pseudo-steps, doc/theory.md section 6.1) is sharper at its centre than
+the Gaussian (1.77 times its peak). Checked:
 
 - b = 6d: the lift over the run, two-way against one-way, within 1 %
-  (the requirement). Measured 0.39 % (0.21 mm); the lateral track within
-  0.12 % of D;
+  (the requirement). Measured -0.36 % (0.19 mm); the lateral track within
+  0.11 % of D;
 - both widths: the lift difference (one-way less two-way: the reaction
-  pushes the fluid about the ore down) between 0.5 and 1.5 times Delta,
-  so that a missing reaction (0) or a doubled one (about 1.7 Delta) is
-  seen. Measured 0.86 (b = 3d: 1.64 mm, lift 3.1 % off, lateral 0.52 % of
-  D) and 0.88 (b = 6d). The difference falls as b^-3 (V_k): 7.9 times
-  smaller for b doubled.
+  pushes the fluid about the ore down) between 0.4 and 1.2 times Delta,
+  so that a missing reaction (0) or a doubled one (1.4 to 1.6 Delta) is
+  seen. Measured 0.69 (b = 3d: 1.31 mm, the lift 2.5 % off, the lateral
+  track 0.46 % of D) and 0.78 (b = 6d). The difference falls nearly as
+  b^-3 (V_k): 7.1 times smaller for b doubled (8).
 
 Figures from the run are printed; the ones above are those measured when
 the test was written.
@@ -108,8 +112,8 @@ for b in WIDTHS:
     if b == 6:
         checks.near("b = 6 d: lift over the run [m], two-way against one-way",
                     lift2[-1], lift1[-1], 1e-2)
-    checks.near("b = %d d: lift difference / Delta (0.5 to 1.5)" % b,
-                found[b] / delta, 1.0, 0.5)
+    checks.near("b = %d d: lift difference / Delta (0.4 to 1.2)" % b,
+                found[b] / delta, 0.8, 0.5)
 print("lift difference at b = 3 d over that at b = 6 d: %.2f (b^-3: 8)"
       % (found[3] / found[6]))
 checks.exit()
