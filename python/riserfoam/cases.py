@@ -356,7 +356,8 @@ def wall_contacts(case):
 
 def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.01,
                       A=0.0, f=0.0, phi0=0.0, frame="riser", drive="", dt=100.0, end=4000.0,
-                      U0=(0.0, 0.0, 0.0), nCorrectors=2, injection="", coupled=False,
+                      U0=(0.0, 0.0, 0.0), nCorrectors=2, nOuterCorrectors=1, injection="",
+                      coupled=False,
                       write_every=None, kernel="type none;", contact=False,
                       cloud_functions=""):
     """A periodic riser section for riserCoupledFoam: the O-grid (n across
@@ -369,8 +370,9 @@ def coupled_pipe_case(case, n, nz, L=0.1, D=0.1, nu=1e-6, rho=1000.0, uCentre=0.
     injection (text), coupled true or false, the coarse-particle kernel's
     entries kernel (text; the default, type none, the one-cell deposit),
     wall contact (contact: the flagship's riserWallContact, else none) and
-    the cloud functions cloud_functions (text); written every write_every
-    steps (default: at the end)."""
+    the cloud functions cloud_functions (text); PIMPLE's nCorrectors and
+    nOuterCorrectors; written every write_every steps (default: at the
+    end)."""
     dynamic = frame == "lab" and A * f > 0
     shutil.rmtree(case, ignore_errors=True)
     os.makedirs(os.path.join(case, "system"))
@@ -408,14 +410,14 @@ solvers
 }
 PIMPLE
 {
-    nOuterCorrectors 1;
+    nOuterCorrectors %d;
     nCorrectors %d;
     nNonOrthogonalCorrectors 1;
     momentumPredictor yes;
     pRefCell 0;
     pRefValue 0;
 }
-""" % nCorrectors)
+""" % (nOuterCorrectors, nCorrectors))
     riser_mesh(case, D, L, n, nz=nz, ends="cyclic")
     ff.write_dictionary(os.path.join(case, "constant/riserProperties"), """
 D           %r;

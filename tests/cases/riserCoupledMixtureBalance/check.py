@@ -44,23 +44,29 @@ the drive's, averaged over the window's steps (drive.dat). The window,
 0.4 to 1.2 s, is two riser periods after one of start-up, so that the
 ores' momentum change is small (the ores all swing with the riser).
 
-Checked: the two sides within 2 % for each run. The balance holds over
-any window; what is not exact: the carrier's wall shear sampled every 20
-steps (it drifts by ~10 % over the window, smoothly: the trapezoid's
-error is a fraction of a percent of its 3.4 % share), contacts
-straddling the window's ends (they last < 60 us), the carrier's
-non-conservative convective form and its face-flux reconstruction of the
-forces (riserCoupledKernel: 4e-4), the semi-implicit reaction's part on
-the new velocity (the ores feel the old). Measured (-dp/dz against the
-sum; in brackets the ores' wall friction, the carrier's wall shear and
-the ores' momentum change, Pa/m, of C_v (rho_p - rho_f) g = 98.7 Pa/m):
-alone 121.74 against 122.64, 0.74 % (25.06, 4.30, -5.46; tau_w 0.62 Pa
-of the ores, 0.11 Pa of the carrier); pairs 118.25 against 119.25,
-0.84 % (20.68, 4.28, -4.45). Without the ores' wall friction the balance
-would be 25 % (20 %) off, without the carrier's 2.9 %: both are seen.
-The residual, the same in both runs (0.9 and 1.0 Pa/m, so not the
-contacts), is the coupling's: without ores the carrier's wall force from
-wallShearStress equals the drive's gradient to 3e-5 on this grid.
+Checked: the two sides within 0.5 % for each run (the requirement was
+2 %), the carrier solved with two PIMPLE outer correctors a step. The
+balance holds over any window, so the window's statistics do not enter;
+what is not exact: the carrier's wall shear sampled every 20 steps
+(smooth, drifting by a fifth over the window: the trapezoid's error is a
+small part of its 3.5 % share), contacts straddling the window's ends
+(they last < 70 us), the clustered ores' fluid force frozen over a flow
+step (pairs), and the splitting of a step. With one outer corrector (the
+convection with the previous step's flux alpha_c phi, and its continuity
+correction) the balance was 0.74 % and 0.84 % off (-dp/dz 0.9 and 1.0
+Pa/m low), and 0.59 % with the riser at rest and no contact (15 ores
+rising in the core), 0.015 % there with two: the lag of one corrector,
+not the contacts. Without ores the carrier's wall force from
+wallShearStress equals the drive's gradient to 1e-8 on this grid. 0.5 %
+is six times the largest residual measured and a seventh of the
+carrier's wall shear's share. Measured (-dp/dz against the sum; in
+brackets the ores' wall friction, the carrier's wall shear and the ores'
+momentum change, Pa/m, of C_v (rho_p - rho_f) g = 98.73 Pa/m): alone
+122.60 against 122.62, 1.5e-4 (25.06, 4.31, -5.48; tau_w 0.62 Pa of the
+ores, 0.11 Pa of the carrier; 67 contacts); pairs 116.09 against 116.19,
+8.6e-4 (18.33, 4.27, -5.15; 63 contacts). Without the ores' wall
+friction the balance would be 26 % (19 %) off, without the carrier's
+3.6 %: both terms are seen. The ores rise at 0.89 (0.84) m/s on average.
 """
 import concurrent.futures
 import math
@@ -108,6 +114,7 @@ def transport(name, pairs):
     cases.coupled_pipe_case(case, 8, 10, L=L, D=D, rho=RHO, uCentre=UCM, A=A, f=F,
                             frame="riser", dt=DT, end=END, U0="poiseuille", injection=ORES,
                             coupled=True, contact=True, write_every=round(WRITE / DT),
+                            nOuterCorrectors=2,
                             kernel="type diffusion; width 3; widthUnit diameters;")
     if pairs:
         foamfields.edit(os.path.join(case, "constant/kinematicCloudProperties"),
@@ -180,7 +187,7 @@ for case in runs:
     name = os.path.basename(case)
     total = terms["weight"] + terms["fluidWall"] + terms["oreWall"] + terms["inertia"]
     checks.near("%s: -dp/dz [Pa/m] against the mixture's balance" % name,
-                terms["dpdz"], total, 2e-2)
+                terms["dpdz"], total, 5e-3)
     print("  (without the ores' wall friction %.1f %% off, without the carrier's %.1f %%)"
           % (100 * (terms["dpdz"] / (total - terms["oreWall"]) - 1),
              100 * (terms["dpdz"] / (total - terms["fluidWall"]) - 1)))
