@@ -52,11 +52,12 @@ Foam::OFstream& Foam::RiserWallContact<CloudType>::contactFile()
             (
                 this->owner().mesh(), this->owner().name(), typeName, "contacts",
                 "# riserWallContact: one completed particle-wall contact a line\n"
-                "# velocities relative to the wall [m/s], spin [rad/s], SI units\n"
+                "# velocities relative to the wall [m/s], spin [rad/s], SI units;"
+                " J: the wall force's impulse [N s]\n"
                 "# origProc origId tStart tEnd duration overlapMax"
                 " normalForceMax Uin_x Uin_y Uin_z Uout_x Uout_y Uout_z"
                 " omegaIn_x omegaIn_y omegaIn_z omegaOut_x omegaOut_y omegaOut_z"
-                " UnIn UnOut\n",
+                " UnIn UnOut J_x J_y J_z\n",
                 3   // tEnd: a contact is kept when it ended by the start time
             );
     }
@@ -849,6 +850,7 @@ Foam::RiserWallContact<CloudType>::wallContactGoesOn
     const scalar t,
     const scalar h,
     const scalar overlap,
+    const vector& F,
     const scalar normalForce,
     const vector& Urel,
     const vector& n,
@@ -864,7 +866,7 @@ Foam::RiserWallContact<CloudType>::wallContactGoesOn
             contactEvent
             {
                 t - h, overlap, normalForce, Urel, Urel & n, spin,
-                vector::zero, n, vector::zero
+                vector::zero, n, vector::zero, h*F
             }
         );
         return events_[key];
@@ -872,6 +874,7 @@ Foam::RiserWallContact<CloudType>::wallContactGoesOn
     contactEvent& e = *iter;
     e.overlapMax = max(e.overlapMax, overlap);
     e.normalForceMax = max(e.normalForceMax, normalForce);
+    e.impulse += h*F;
     return e;
 }
 
@@ -902,7 +905,9 @@ void Foam::RiserWallContact<CloudType>::wallContactEnds
         << Uout.x() << ' ' << Uout.y() << ' ' << Uout.z() << ' '
         << e.spinIn.x() << ' ' << e.spinIn.y() << ' ' << e.spinIn.z() << ' '
         << spin.x() << ' ' << spin.y() << ' ' << spin.z() << ' '
-        << e.normalSpeedIn << ' ' << -(Uout & n) << endl;
+        << e.normalSpeedIn << ' ' << -(Uout & n) << ' '
+        << e.impulse.x() << ' ' << e.impulse.y() << ' ' << e.impulse.z()
+        << endl;
     recordWallContact(p, e.overlapMax, e.normalSpeedIn);
     events_.erase(iter);
 }
@@ -1137,7 +1142,8 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
                 checkInside(keys[i], c.overlap, g.radius, t);
                 wallContactGoesOn
                 (
-                    keys[i], t, h, c.overlap, c.normalForce, Urel, nw, spin
+                    keys[i], t, h, c.overlap, fromCore(c.force), c.normalForce,
+                    Urel, nw, spin
                 );
                 inContact[i] = true;
             }
@@ -1387,7 +1393,10 @@ void Foam::RiserWallContact<CloudType>::collide()
 
         addWallEnergy(p, -0.5*dt*(workBefore + ((Fn + Ft) & U)));
         contactEvent& e =
-            wallContactGoesOn(key, t, dt, overlap, mag(Fn), p.U() - Uwall, n, spin);
+            wallContactGoesOn
+            (
+                key, t, dt, overlap, Fn + Ft, mag(Fn), p.U() - Uwall, n, spin
+            );
         e.force = Fn + Ft;
         e.normal = n;
         e.wallVelocity = Uwall;
