@@ -1,0 +1,338 @@
+"""What the two-way coupling costs riserCoupledFoam, and its speed-up on two
+processors, on one ore-transport scene.
+
+The scene: a periodic riser section (D = 0.1 m, L = 0.5 m, riserMesh -n 12
+-nz 44 -ends cyclic: 21,120 cells), water driven upward at the bulk
+velocity 1.5 m/s (twice the terminal speed of the ores, about 0.55 m/s), the
+turbulent carrier of kOmegaSST with wall functions
+(cases.coupled_pipe_kOmegaSST); the riser oscillates at A = 0.1 m, f = 3 Hz
+(riser frame); ores of d = 10 mm (2000 kg/m^3) fill the section at C_v =
+0.05 (riserFill, seed 1, at rest relative to the carrier: about 375 ores),
+forces wallCorrectedDrag, riserFluidStress, riserFrame and gravity, wall
+and pair contact (riserWallContact with pairs, the coefficients of the
+tutorial riser/oreTransport, stepsPerContact 10); dt = 5e-4 s; PIMPLE with
+1 outer and 2 pressure correctors, p by PCG/DIC to 1e-7 (relTol 0.01 in the
+first corrector), U, k, omega by symGaussSeidel to 1e-7 (relTol 0.1 in the
+first). The kernel is the diffusion kernel of 3 largest diameters
+(b = 30 mm, 4 pseudo-steps) unless said.
+
+Suite 'cost' (serial): the CPU time per step of five variants of the scene,
+run alternately (A B C D E, then E D C B A, ...) in this one command, so
+that the shared machine's load falls on all alike:
+
+    fluid       no ores (the carrier alone)
+    oneWay      coupled false: the ores move in the computed carrier, which
+                feels their volume (alpha_c, spread by the kernel) but not
+                their force
+    oneWayNone  the same with kernel none (alpha_c from one-cell deposits)
+    twoWay      coupled true, kernel diffusion
+    twoWayNone  coupled true, kernel none
+
+Reported: the time per step of each (median and least over the repeats),
+the ratio twoWay / oneWay (the target: at most 1.3) computed repeat by
+repeat and its median and range, and the breakdown: fluid; cloud =
+oneWayNone - fluid; the spread alpha_c = oneWay - oneWayNone; the reaction
+with one-cell deposits = twoWayNone - oneWayNone; the kernel's spreading of
+the reaction = twoWay - twoWayNone.
+
+Suite 'ranks': the twoWay scene on one and on two processors (decomposePar,
+simple, split along the riser's axis z), alternately, each run started once
+the machine's other work has dropped below 0.3 cores or after 30 s: the
+wall time per step (median over the measured steps of a run) and the
+speed-up, repeat by repeat, with the other work measured during each run
+and the load average.
+
+Timing as in bench.py (run_solver): the CPU time of the solver's threads
+read at each ExecutionTime line, over steps 3 .. steps - 1 (step 1 injects
+the ores, the last one writes).
+
+usage: coupledCloud.py [--quick] [--suites cost,ranks] [--repeats N]
+                       --build DIR --results DIR
+writes <results>/coupledCloud.json and <results>/coupledCloud.md
+License: GPL-3.0-or-later
+"""
+import argparse
+import glob
+import json
+import os
+import re
+import shutil
+import statistics
+
+import bench
+from riserfoam import cases
+from riserfoam import foamfields as ff
+
+D, L, N_CORE, NZ = 0.1, 0.5, 12, 44
+UB, DT, CV, ORE_D = 1.5, 5e-4, 0.05, 0.01
+KERNEL = "type diffusion; width 3; widthUnit diameters; pseudoSteps 4;"
+ORES = """
+        ores
+        {
+            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
+            solidsFraction %r; seed 1; velocity carrier;
+            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
+        }""" % (CV, ORE_D)
+CONTACT = """collisionModel riserWallContact;
+    riserWallContactCoeffs
+    {
+        wall { youngsModulus 2e11; poissonsRatio 0.3; }
+        normalRestitution 0.76; tangentialRestitution 0.7; friction 0.2;
+        normalForce tensionAllowed; rotation off; stepsPerContact 10;
+        pairs { normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }
+    }"""
+SOLVERS = """
+solvers
+{
+    p { solver PCG; preconditioner DIC; tolerance 1e-7; relTol 0.01; }
+    pFinal { $p; relTol 0; }
+    "(U|k|omega)" { solver smoothSolver; smoother symGaussSeidel; tolerance 1e-7; relTol 0.1; }
+    "(U|k|omega)Final" { $U; relTol 0; }
+}
+"""
+# variant: (ores, coupled, kernel)
+VARIANTS = {
+    "fluid": (False, False, KERNEL),
+    "oneWay": (True, False, KERNEL),
+    "oneWayNone": (True, False, "type none;"),
+    "twoWay": (True, True, KERNEL),
+    "twoWayNone": (True, True, "type none;"),
+}
+
+
+def make(case, variant, steps):
+    """the scene (see above) as variant, run for steps steps"""
+    ores, coupled, kernel = VARIANTS[variant]
+    cases.coupled_pipe_case(case, N_CORE, NZ, L=L, D=D, nu=1e-6, rho=1000.0, uCentre=2 * UB,
+                            A=0.1, f=3.0, drive="bulkVelocity %r;" % UB, dt=DT,
+                            end=steps * DT, injection=ORES if ores else "",
+                            coupled=coupled, kernel=kernel)
+    cases.coupled_pipe_kOmegaSST(case, UB, D)
+    ff.edit(os.path.join(case, "system/fvSolution"), r"^solvers\n\{(.|\n)*?\n\}\n", SOLVERS)
+    ff.edit(os.path.join(case, "constant/kinematicCloudProperties"),
+            r"^\s*collisionModel none;", "    " + CONTACT)
+    # every repeat from the start time
+    ff.set_entry(os.path.join(case, "system/controlDict"), "startFrom", "startTime")
+    return case
+
+
+def timed(case, np=1):
+    """run_solver on case, the output of an earlier run removed"""
+    for folder in [case] + glob.glob(os.path.join(case, "processor*")):
+        shutil.rmtree(os.path.join(folder, "postProcessing"), ignore_errors=True)
+        for entry in os.listdir(folder):
+            try:
+                if float(entry) > 0:
+                    shutil.rmtree(os.path.join(folder, entry))
+            except ValueError:
+                pass
+    return bench.run_solver(case, "riserCoupledFoam", np)
+
+
+def iterations(case):
+    """Linear-solver iterations per flow step of one more run of case with
+    the kernel's debug switch (its pseudo-steps' solves printed): the
+    kernel's pseudo-steps, solves and iterations; the pressure's solves and
+    iterations (steps 3 .. the last)"""
+    control = os.path.join(case, "system/controlDict")
+    text = open(control).read()
+    with open(control, "a") as out:
+        out.write("DebugSwitches { particleKernel 1; }\n")
+    try:
+        timed(case)
+    finally:
+        with open(control, "w") as out:
+            out.write(text)
+    log = open(os.path.join(case, "log.riserCoupledFoam")).read()
+    steps = log.split("\nTime = ")[3:]
+    kernel = [[int(n) for n in re.findall(r"particleKernel: pseudo-step \d+, (\d+) iterations", s)]
+              for s in steps]
+    p = [[int(n) for n in re.findall(r"Solving for p, .* No Iterations (\d+)", s)] for s in steps]
+    mean = lambda xs: sum(xs) / len(xs)
+    return {"steps": len(steps),
+            "kernelSolvesPerStep": mean([len(k) for k in kernel]),
+            "kernelIterationsPerStep": mean([sum(k) for k in kernel]),
+            "pressureSolvesPerStep": mean([len(x) for x in p]),
+            "pressureIterationsPerStep": mean([sum(x) for x in p])}
+
+
+def suite_cost(args, work):
+    steps = 8 if args.quick else 25
+    names = list(VARIANTS)
+    paths = {k: make(os.path.join(work, "cost", k), k, steps) for k in names}
+    runs = {k: [] for k in names}
+    for rep in range(args.repeats):
+        for k in (names if rep % 2 == 0 else names[::-1]):
+            r = timed(paths[k])
+            r["cpuPerStep"] = bench.per_step(r["cpuStamps"], 3, steps - 1)
+            r["wallPerStep"] = bench.per_step(r["wallStamps"], 3, steps - 1)
+            runs[k].append({key: r[key] for key in
+                            ("cpuPerStep", "wallPerStep", "parcels", "backgroundCores",
+                             "peakRssKB", "totalWall")})
+            print("%-11s rep %d: %8.2f ms/step CPU, %8.2f ms wall, %s parcels, other work "
+                  "%.2f cores" % (k, rep + 1, 1e3 * r["cpuPerStep"], 1e3 * r["wallPerStep"],
+                                  r["parcels"], r["backgroundCores"]), flush=True)
+    med = statistics.median
+    t = {k: med(r["cpuPerStep"] for r in runs[k]) for k in names}
+    tmin = {k: min(r["cpuPerStep"] for r in runs[k]) for k in names}
+    ratios = [a["cpuPerStep"] / b["cpuPerStep"] for a, b in zip(runs["twoWay"], runs["oneWay"])]
+    ratios_none = [a["cpuPerStep"] / b["cpuPerStep"]
+                   for a, b in zip(runs["twoWayNone"], runs["oneWayNone"])]
+    breakdown = {}
+    for label, which in (("median", t), ("least", tmin)):
+        breakdown[label] = {
+            "fluid": which["fluid"],
+            "cloud": which["oneWayNone"] - which["fluid"],
+            "spread alpha_c": which["oneWay"] - which["oneWayNone"],
+            "reaction, one-cell": which["twoWayNone"] - which["oneWayNone"],
+            "spread reaction": (which["twoWay"] - which["twoWayNone"])
+                               - (which["oneWay"] - which["oneWayNone"]),
+        }
+    return {"ores": runs["twoWay"][0]["parcels"], "iterations": iterations(paths["twoWay"]),
+            "steps": steps, "measuredSteps": [3, steps - 1], "repeats": args.repeats,
+            "runs": runs, "cpuPerStep": t, "cpuPerStepLeast": tmin,
+            "ratioTwoWayOneWay": med(ratios), "ratioTwoWayOneWayAllRepeats": ratios,
+            "ratioTwoWayOneWayOfLeast": tmin["twoWay"] / tmin["oneWay"],
+            "ratioKernelNone": med(ratios_none), "ratioKernelNoneAllRepeats": ratios_none,
+            "breakdown": breakdown}
+
+
+def suite_ranks(args, work):
+    steps = 10 if args.quick else 30
+    paths = {}
+    for np in (1, 2):
+        paths[np] = make(os.path.join(work, "ranks", "np%d" % np), "twoWay", steps)
+    ff.write_dictionary(os.path.join(paths[2], "system/decomposeParDict"),
+                        "numberOfSubdomains 2;\nmethod simple;\n"
+                        "simpleCoeffs { n (1 1 2); delta 0.001; }\n")
+    cases.run(["decomposePar", "-case", paths[2]], os.path.join(paths[2], "log.decomposePar"))
+    wall = {1: [], 2: []}
+    cpu = {1: [], 2: []}
+    other = {1: [], 2: []}
+    quiet = {1: [], 2: []}
+    loads = []
+    for rep in range(args.repeats):
+        for np in ((1, 2) if rep % 2 == 0 else (2, 1)):
+            quiet[np].append(bench.wait_for_quiet())
+            loads.append(open("/proc/loadavg").read().split()[:3])
+            r = timed(paths[np], np)
+            w = statistics.median(bench.step_costs(r["wallStamps"])[2:steps - 2])
+            if np == 1:
+                c = bench.per_step(r["cpuStamps"], 4, steps - 1)
+            else:
+                # the busiest rank's CPU time (ranks poll while they wait)
+                c = max(bench.per_step([x[i] if x else None for x in r["rankCpuStamps"]],
+                                       4, steps - 1) for i in range(np))
+            wall[np].append(w)
+            cpu[np].append(c)
+            other[np].append(r["backgroundCores"])
+            ores = r["parcels"]
+            print("np %d rep %d: %8.2f ms/step wall (median), %8.2f ms/step CPU (busiest rank), "
+                  "%s parcels, other work %.2f cores"
+                  % (np, rep + 1, 1e3 * w, 1e3 * c, r["parcels"], r["backgroundCores"]),
+                  flush=True)
+    ratios = [a / b for a, b in zip(wall[1], wall[2])]
+    return {"ores": ores, "steps": steps, "repeats": args.repeats,
+            "decomposition": "simple (1 1 2): split along the riser's axis",
+            "wallPerStep": {str(k): v for k, v in wall.items()},
+            "cpuPerStepBusiestRank": {str(k): v for k, v in cpu.items()},
+            "speedup": statistics.median(ratios), "speedupAllRepeats": ratios,
+            "otherWorkDuringRun": {str(k): v for k, v in other.items()},
+            "otherWorkBeforeRun": {str(k): v for k, v in quiet.items()},
+            "loadAverages": loads}
+
+
+def write(args, result):
+    with open(os.path.join(args.results, "coupledCloud.json"), "w") as out:
+        json.dump(result, out, indent=1)
+    ms = lambda s: "%.1f" % (1e3 * s)
+    lines = ["# What the two-way coupling costs riserCoupledFoam (benchmarks/coupledCloud.py%s)\n"
+             % (" --quick" if args.quick else ""),
+             "Measured %s on %d cores (%s), load average %s at the start. The scene: "
+             "benchmarks/coupledCloud.py's docstring (%d ores of 10 mm, C_v = %g, kOmegaSST, "
+             "riser frame, wall and pair contact, 21,120 cells, dt = %g s).\n"
+             % (result["date"], result["machine"]["nproc"], result["machine"]["cpu"],
+                " ".join(result["machine"]["loadAverageAtStart"]),
+                next(s["ores"] for s in result["suites"].values()), CV, DT)]
+    cost = result["suites"].get("cost")
+    if cost:
+        t, tmin = cost["cpuPerStep"], cost["cpuPerStepLeast"]
+        lines.append("## Cost per step, serial\n\nCPU time of the solver per step, steps %d..%d "
+                     "of %d, %d repeats run alternately; median and least over the repeats.\n"
+                     % (cost["measuredSteps"][0], cost["measuredSteps"][1], cost["steps"],
+                        cost["repeats"]))
+        lines.append("| variant | ms/step (median) | ms/step (least) | all repeats |\n"
+                     "|---|---|---|---|")
+        for k in VARIANTS:
+            lines.append("| %s | %s | %s | %s |" % (k, ms(t[k]), ms(tmin[k]), ", ".join(
+                ms(r["cpuPerStep"]) for r in cost["runs"][k])))
+        ok = cost["ratioTwoWayOneWay"] <= 1.3
+        lines.append("\n**twoWay / oneWay = %.2f** (median of the repeats' ratios; range %.2f to "
+                     "%.2f; of the least times %.2f): target <= 1.3 %s. With one-cell deposits "
+                     "(kernel none) twoWayNone / oneWayNone = %.2f (range %.2f to %.2f).\n"
+                     % (cost["ratioTwoWayOneWay"], min(cost["ratioTwoWayOneWayAllRepeats"]),
+                        max(cost["ratioTwoWayOneWayAllRepeats"]),
+                        cost["ratioTwoWayOneWayOfLeast"], "met" if ok else "NOT met",
+                        cost["ratioKernelNone"], min(cost["ratioKernelNoneAllRepeats"]),
+                        max(cost["ratioKernelNoneAllRepeats"])))
+        lines.append("| part of the twoWay step | ms/step (from the medians) | share | "
+                     "ms/step (from the least) |\n|---|---|---|---|")
+        total = t["twoWay"]
+        for part, v in cost["breakdown"]["median"].items():
+            lines.append("| %s | %s | %.0f %% | %s |" % (part, ms(v), 100 * v / total,
+                                                         ms(cost["breakdown"]["least"][part])))
+        it = cost["iterations"]
+        lines.append("\nLinear solves of a twoWay step (one more run with the debug switch "
+                     "particleKernel 1, means over %d steps): the kernel %.0f solves of %.0f "
+                     "PCG iterations in all (%.1f each: 4 pseudo-steps for each of theta, "
+                     "UTrans x, y, z and UCoeff, to a normalised residual of 1e-14); the "
+                     "pressure %.0f solves of %.0f iterations in all.\n"
+                     % (it["steps"], it["kernelSolvesPerStep"], it["kernelIterationsPerStep"],
+                        it["kernelIterationsPerStep"] / it["kernelSolvesPerStep"],
+                        it["pressureSolvesPerStep"], it["pressureIterationsPerStep"]))
+    ranks = result["suites"].get("ranks")
+    if ranks:
+        lines.append("## One and two processors\n\nThe twoWay scene, %d steps, decomposePar %s; "
+                     "wall time per step (median over steps 4..%d of a run), %d repeats "
+                     "alternately; each run waited (30 s at most) for the other work to drop "
+                     "below 0.3 cores.\n" % (ranks["steps"], ranks["decomposition"],
+                                             ranks["steps"] - 1, ranks["repeats"]))
+        lines.append("| processors | ms/step wall, each repeat | ms/step CPU of the busiest "
+                     "rank | other work before the run [cores] | other work during the run "
+                     "[cores] |\n|---|---|---|---|---|")
+        for np in ("1", "2"):
+            lines.append("| %s | %s | %s | %s | %s |" % (
+                np, ", ".join(ms(w) for w in ranks["wallPerStep"][np]),
+                ", ".join(ms(c) for c in ranks["cpuPerStepBusiestRank"][np]),
+                ", ".join("%.2f" % x for x in ranks["otherWorkBeforeRun"][np]),
+                ", ".join("%.2f" % x for x in ranks["otherWorkDuringRun"][np])))
+        lines.append("\n**Speed-up np 1 / np 2 = %.2f** (median of the repeats; %s). Load "
+                     "averages at the runs' starts: %s.\n"
+                     % (ranks["speedup"], ", ".join("%.2f" % x for x in ranks["speedupAllRepeats"]),
+                        "; ".join(" ".join(l) for l in ranks["loadAverages"])))
+    with open(os.path.join(args.results, "coupledCloud.md"), "w") as out:
+        out.write("\n".join(lines))
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--suites", default="cost,ranks")
+    ap.add_argument("--repeats", type=int, default=None)
+    ap.add_argument("--build", required=True)
+    ap.add_argument("--results", required=True)
+    args = ap.parse_args()
+    if args.repeats is None:
+        args.repeats = 2 if args.quick else 3
+    work = os.path.join(os.path.abspath(args.build), "coupledCloud")
+    os.makedirs(args.results, exist_ok=True)
+    result = {"machine": bench.machine(), "quick": args.quick, "suites": {}}
+    result["date"] = result["machine"]["date"]
+    for suite in args.suites.split(","):
+        result["suites"][suite] = {"cost": suite_cost, "ranks": suite_ranks}[suite](args, work)
+        result["suites"][suite]["loadAverageAtEnd"] = open("/proc/loadavg").read().split()[:3]
+        write(args, result)
+
+
+if __name__ == "__main__":
+    main()
