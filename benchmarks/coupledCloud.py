@@ -42,12 +42,13 @@ twoWayNone) - (oneWay - oneWayNone). Then one more twoWay run with the
 debug switch particleKernel 1 counts the linear solves of a step and
 their iterations: the kernel's pseudo-steps and the pressure's.
 
-Suite 'ranks': the twoWay and twoWayNone scenes on one and on two processors (decomposePar,
-simple, split along the riser's axis z), alternately, each run started once
-the machine's other work has dropped below 0.3 cores or after 60 s: the
-wall time per step (median over the measured steps of a run) and the
-speed-up, repeat by repeat and of the least wall times (the quietest
-runs), the CPU time per step of the busiest rank, with the other work measured before and during each run and the
+Suite 'ranks': the twoWay and twoWayNone scenes on one and on two
+processors (decomposePar, simple, split along the riser's axis z),
+alternately, each run started once the machine's other work has dropped
+below 0.3 cores or after 60 s: the wall time per step (median over the
+measured steps of a run) and the speed-up, repeat by repeat and of the
+least wall times (the quietest runs), the CPU time per step of the busiest
+rank, with the other work measured before and during each run and the
 load average. Two ranks on two cores that other work also uses wait for
 each other: mpirun's ranks poll while they wait, so a rank descheduled
 for another process stalls both.
