@@ -266,6 +266,13 @@ void Foam::particleKernel::diffuse
         {
             eq.source() = mesh_.V().field()*phi.primitiveField();
             const solverPerformance perf = eq.solve(controls);
+            if (debug)
+            {
+                Info<< "particleKernel: pseudo-step " << step << ", "
+                    << perf.nIterations() << " iterations, residual "
+                    << perf.initialResidual() << " -> "
+                    << perf.finalResidual() << endl;
+            }
             if (!perf.converged() && perf.finalResidual() > 1e-10)
             {
                 WarningInFunction
