@@ -5,7 +5,7 @@ The scene: a periodic riser section (D = 0.1 m, L = 0.5 m, riserMesh -n 12
 -nz 44 -ends cyclic: 21,120 cells), water driven upward at the bulk
 velocity 1.5 m/s (twice the terminal speed of the ores, about 0.55 m/s), the
 turbulent carrier of kOmegaSST with wall functions
-(cases.coupled_pipe_kOmegaSST); the riser oscillates at A = 0.1 m, f = 3 Hz
+(cases.coupled_pipe_RAS); the riser oscillates at A = 0.1 m, f = 3 Hz
 (riser frame); ores of d = 10 mm (2000 kg/m^3) fill the section at C_v =
 0.05 (riserFill, seed 1, at rest relative to the carrier: about 375 ores),
 forces wallCorrectedDrag, riserFluidStress, riserFrame and gravity, wall
@@ -73,25 +73,12 @@ import statistics
 import bench
 from riserfoam import cases
 from riserfoam import foamfields as ff
+from riserfoam.suspension import CONTACTS
 
 D, L, N_CORE, NZ = 0.1, 0.5, 12, 44
 UB, DT, CV, ORE_D = 1.5, 5e-4, 0.05, 0.01
 KERNEL = "type diffusion; width 3; widthUnit diameters; pseudoSteps 4;"
-ORES = """
-        ores
-        {
-            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
-            solidsFraction %r; seed 1; velocity carrier;
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % (CV, ORE_D)
-CONTACT = """collisionModel riserWallContact;
-    riserWallContactCoeffs
-    {
-        wall { youngsModulus 2e11; poissonsRatio 0.3; }
-        normalRestitution 0.76; tangentialRestitution 0.7; friction 0.2;
-        normalForce tensionAllowed; rotation off; stepsPerContact 10;
-        pairs { normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }
-    }"""
+ORES = cases.fill_injection(CV, ORE_D)
 SOLVERS = """
 solvers
 {
@@ -123,11 +110,9 @@ def make(case, variant, steps):
     cases.coupled_pipe_case(case, N_CORE, NZ, L=L, D=D, nu=1e-6, rho=1000.0, uCentre=2 * UB,
                             A=0.1, f=3.0, drive="bulkVelocity %r;" % UB, dt=DT,
                             end=steps * DT, injection=ORES if ores else "",
-                            coupled=coupled, kernel=kernel)
-    cases.coupled_pipe_kOmegaSST(case, UB, D)
+                            coupled=coupled, kernel=kernel, collision=CONTACTS)
+    cases.coupled_pipe_RAS(case, UB, D)
     ff.edit(os.path.join(case, "system/fvSolution"), r"^solvers\n\{(.|\n)*?\n\}\n", SOLVERS)
-    ff.edit(os.path.join(case, "constant/kinematicCloudProperties"),
-            r"^\s*collisionModel none;", "    " + CONTACT)
     # every repeat from the start time
     ff.set_entry(os.path.join(case, "system/controlDict"), "startFrom", "startTime")
     return case

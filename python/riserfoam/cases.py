@@ -37,6 +37,23 @@ def run(command, log, cwd=None, may_fail=False):
     return text
 
 
+
+def run_parallel(case, solver, split=(2, 1, 1)):
+    """Run solver on the case decomposed (simple, split cells along x, y,
+    z; as many processors as their product) and reconstruct the latest
+    time. Returns the solver's log."""
+    ff.write_dictionary(os.path.join(case, "system/decomposeParDict"), """
+numberOfSubdomains %d;
+method simple;
+simpleCoeffs { n (%d %d %d); delta 0.001; }
+""" % ((split[0] * split[1] * split[2],) + tuple(split)))
+    run(["decomposePar", "-case", case], os.path.join(case, "log.decomposePar"))
+    log = run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np",
+               str(split[0] * split[1] * split[2]), solver, "-parallel", "-case", case],
+              os.path.join(case, "log." + solver))
+    run(["reconstructPar", "-latestTime", "-case", case], os.path.join(case, "log.reconstructPar"))
+    return log
+
 def copy_tutorial(tutorial, case, root=ROOT):
     """A fresh copy of the tutorial (a folder under tutorials/, e.g.
     'riser/oscillatingNoContact') in case: its 0, constant and system,
@@ -562,6 +579,30 @@ def flagship_contact():
     start = text.index("collisionModel")
     return text[start:ff.matching(text, text.index("{", start)) + 1]
 
+
+
+def fill_injection(cv, d=None, seed=1, sizes=None):
+    """The injector 'ores' of a coupled_pipe_case, as text: the section
+    filled at the start (riserFill) at the solids fraction cv with ores at
+    rest with the carrier, of diameter d or of the size distribution sizes
+    (the text of a sizeDistribution's entries)"""
+    sizes = sizes or "type fixedValue; fixedValueDistribution { value %r; }" % d
+    return """
+        ores
+        {
+            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
+            solidsFraction %r; seed %d; velocity carrier;
+            sizeDistribution { %s }
+        }""" % (cv, seed, sizes)
+
+
+def solve_coupled(case):
+    """riserCoupledFoam on the case, then its cell volumes V at the latest
+    time"""
+    run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
+    run(["postProcess", "-func", "writeCellVolumes", "-latestTime", "-case", case],
+        os.path.join(case, "log.writeCellVolumes"))
+    return case
 
 def coupled_pipe_RAS(case, ub, D=0.1, model="kOmegaSST", nutWall="nutkWallFunction"):
     """Make a coupled_pipe_case turbulent: the RAS model (kOmegaSST,

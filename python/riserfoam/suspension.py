@@ -143,25 +143,11 @@ def settling_case(case, d, D, L, n, nz, cv, dt, end, write_every, kernel, seed=1
     (default: riserWallContact with pairs, ores of Young's modulus E) and
     kernel (text of the kernel's entries); written every write_every
     steps"""
-    injection = """
-        ores
-        {
-            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
-            solidsFraction %r; seed %d; velocity carrier;
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % (cv, seed, d)
+    injection = cases.fill_injection(cv, d, seed)
     cases.coupled_pipe_case(case, n, nz, L=L, D=D, nu=NU, rho=RHO_F, dt=dt, end=end,
                             drive="bulkVelocity 0;", coupled=True, write_every=write_every,
                             injection=injection, kernel=kernel, forces=forces,
                             collision=collision, E=E)
-    return case
-
-
-def solve(case):
-    """riserCoupledFoam, then the cell volumes at the last time"""
-    cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
-    cases.run(["postProcess", "-func", "writeCellVolumes", "-latestTime", "-case", case],
-              os.path.join(case, "log.writeCellVolumes"))
     return case
 
 

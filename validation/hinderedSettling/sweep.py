@@ -97,7 +97,7 @@ def case_path(scratch, scene, drag, cv):
 
 def run(scratch, scene, drag, cv):
     case = case_path(scratch, scene, drag, cv)
-    sus.solve(sus.hindered_case(case, cv, sus.SCENES[scene]["end"], forces=DRAGS[drag],
+    cases.solve_coupled(sus.hindered_case(case, cv, sus.SCENES[scene]["end"], forces=DRAGS[drag],
                                 scene=scene))
 
 

@@ -47,6 +47,7 @@ import os
 import re
 from concurrent.futures import ThreadPoolExecutor
 
+from riserfoam import cases
 from riserfoam import suspension as sus
 
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -62,7 +63,7 @@ def case_path(scratch, kernel, n):
 
 
 def run(scratch, kernel, n, end):
-    sus.solve(sus.mesh_case(case_path(scratch, kernel, n), n, kernel, end))
+    cases.solve_coupled(sus.mesh_case(case_path(scratch, kernel, n), n, kernel, end))
 
 
 def cpu(case):

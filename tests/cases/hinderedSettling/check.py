@@ -43,12 +43,13 @@ its own.
 """
 import os
 
+from riserfoam import cases
 from riserfoam import suspension as sus
 from riserfoam.checks import Checks
 
 checks = Checks(width=70)
 END = 0.3
-case = sus.solve(sus.hindered_case(os.path.abspath("hindered"), 0.1, END))
+case = cases.solve_coupled(sus.hindered_case(os.path.abspath("hindered"), 0.1, END))
 m = sus.measure(case, sus.SCENES["1mm"]["t0"])
 ref = sus.hindered_reference(m["cv"])
 ratio = m["slip"] / ref["ut"]

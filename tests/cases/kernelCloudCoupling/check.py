@@ -28,7 +28,7 @@ import os
 import re
 
 from riserfoam import foamfields as ff
-from riserfoam.cases import ROOT, riser_mesh, run
+from riserfoam.cases import riser_mesh, run
 from riserfoam.checks import Checks
 from riserfoam import kernel
 

@@ -32,7 +32,6 @@ sources, spread over b = 3 d in 4 pseudo-steps:
 import math
 import os
 import shutil
-import sys
 
 import numpy as np
 

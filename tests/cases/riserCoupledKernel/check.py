@@ -67,13 +67,7 @@ D, L, RHO, RHO_P, G, CV, d = 0.05, 0.04, 1000.0, 2000.0, 9.81, 0.005, 0.003
 DT, T0, END = 2e-3, 0.25, 0.4
 KERNEL = "type diffusion; width 4; widthUnit diameters;"
 GRIDS = ((12, 24), (6, 12), (4, 8))
-ORES = """
-        ores
-        {
-            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
-            solidsFraction %r; seed 1; velocity carrier;
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % (CV, d)
+ORES = cases.fill_injection(CV, d)
 
 
 def suspension(name, n, nz, kernel, end=END, U0=(0.0, 0.0, 0.0)):
@@ -85,13 +79,6 @@ def suspension(name, n, nz, kernel, end=END, U0=(0.0, 0.0, 0.0)):
                             write_every=round(0.05 / DT) if end > T0 else 1,
                             injection=ORES, kernel=kernel)
     foamfields.edit(os.path.join(case, "0/U"), r"riserWall \{[^}]*\}", "riserWall { type slip; }")
-    return case
-
-
-def solve(case):
-    cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
-    cases.run(["postProcess", "-func", "writeCellVolumes", "-latestTime", "-case", case],
-              os.path.join(case, "log.writeCellVolumes"))
     return case
 
 
@@ -128,7 +115,7 @@ step = suspension("oneStep", GRIDS[-1][0], GRIDS[-1][1], KERNEL, end=DT, U0=(0.0
 foamfields.set_entry(os.path.join(step, "system/controlDict"), "writePrecision", "17")
 # the two fine grids first, side by side (two cores)
 with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-    list(pool.map(solve, [runs[0], runs[3], runs[1], runs[2], runs[4], step]))
+    list(pool.map(cases.solve_coupled, [runs[0], runs[3], runs[1], runs[2], runs[4], step]))
 
 kernel = [measure(case) for case in runs[:3]]
 oneCell = [measure(case) for case in runs[3:]]

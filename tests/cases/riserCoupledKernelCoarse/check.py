@@ -37,6 +37,7 @@ its own.
 import concurrent.futures
 import os
 
+from riserfoam import cases
 from riserfoam import suspension as sus
 from riserfoam.checks import Checks
 
@@ -44,7 +45,7 @@ checks = Checks(width=70)
 RUNS = (("diffusion", 16), ("diffusion", 4), ("none", 16))
 paths = {run: os.path.abspath("%s_n%d" % run) for run in RUNS}
 with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-    list(pool.map(lambda run: sus.solve(sus.mesh_case(paths[run], run[1], run[0])), RUNS))
+    list(pool.map(lambda run: cases.solve_coupled(sus.mesh_case(paths[run], run[1], run[0])), RUNS))
 
 d, t0 = sus.MESH_SCENE["d"], sus.MESH_SCENE["t0"]
 m = {run: sus.measure(paths[run], t0) for run in RUNS}

@@ -54,13 +54,7 @@ from riserfoam.checks import Checks
 checks = Checks(width=64)
 UB, END, HALF = 0.5, 0.2, 0.1
 CLOUD = "lagrangian/kinematicCloud"
-ORES = """
-        ores
-        {
-            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
-            solidsFraction 0.01; seed 1; velocity carrier;
-            sizeDistribution { type uniform; uniformDistribution { minValue 0.003; maxValue 0.006; } }
-        }"""
+ORES = cases.fill_injection(0.01, sizes="type uniform; uniformDistribution { minValue 0.003; maxValue 0.006; }")
 
 
 def make(name):
@@ -102,16 +96,7 @@ checks.failures += not ok
 print("the second run continued from %g s %s" % (HALF, "ok" if ok else "FAILED"))
 
 parallel = make("parallel")
-foamfields.write_dictionary(os.path.join(parallel, "system/decomposeParDict"), """
-numberOfSubdomains 2;
-method simple;
-simpleCoeffs { n (2 1 1); delta 0.001; }
-""")
-cases.run(["decomposePar", "-case", parallel], os.path.join(parallel, "log.decomposePar"))
-cases.run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", "riserCoupledFoam",
-           "-parallel", "-case", parallel], os.path.join(parallel, "log.riserCoupledFoam"))
-cases.run(["reconstructPar", "-latestTime", "-case", parallel],
-          os.path.join(parallel, "log.reconstructPar"))
+cases.run_parallel(parallel, "riserCoupledFoam")
 
 carrier, d, ores, drive = state(whole)
 print("whole run: %d ores of %.2f to %.2f mm, dp/dz %.6g Pa/m at %g s"

@@ -81,13 +81,7 @@ checks = Checks(width=66)
 D, L, RHO, RHO_P, G, d = 0.1, 0.1, 1000.0, 2000.0, 9.81, 0.01
 UCM, A, F, CV = 2.0, 0.1, 2.5, 0.01
 DT, T0, END, WRITE = 1e-3, 0.4, 1.2, 0.02
-ORES = """
-        ores
-        {
-            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
-            solidsFraction %r; seed 1; velocity carrier;
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % (CV, d)
+ORES = cases.fill_injection(CV, d)
 PAIRS = "pairs { normalRestitution 0.5; tangentialRestitution 0.5; friction 0.3; }"
 WALL_SHEAR = """
 functions

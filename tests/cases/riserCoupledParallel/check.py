@@ -23,16 +23,7 @@ def make(name):
 serial = make("serial")
 cases.run(["riserCoupledFoam", "-case", serial], os.path.join(serial, "log.riserCoupledFoam"))
 parallel = make("parallel")
-foamfields.write_dictionary(os.path.join(parallel, "system/decomposeParDict"), """
-numberOfSubdomains 2;
-method simple;
-simpleCoeffs { n (2 1 1); delta 0.001; }
-""")
-cases.run(["decomposePar", "-case", parallel], os.path.join(parallel, "log.decomposePar"))
-cases.run(["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2", "riserCoupledFoam",
-           "-parallel", "-case", parallel], os.path.join(parallel, "log.riserCoupledFoam"))
-cases.run(["reconstructPar", "-latestTime", "-case", parallel],
-          os.path.join(parallel, "log.reconstructPar"))
+cases.run_parallel(parallel, "riserCoupledFoam")
 
 drive = {case: tables.read(os.path.join(case, "postProcessing/riserDrive/0/drive.dat"))
          for case in (serial, parallel)}

@@ -24,7 +24,6 @@ it), not of the solver, which gives the same numbers on the same grid
 The bulk velocity is the target to 1e-9 (the drive holds it exactly after
 each correction).
 """
-import math
 import os
 
 from riserfoam import cases, foamfields, tables

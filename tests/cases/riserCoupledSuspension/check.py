@@ -42,17 +42,9 @@ DT, END = 1e-3, 0.3
 case = os.path.abspath("suspension")
 cases.coupled_pipe_case(case, 12, None, L=L, D=D, rho=RHO, dt=DT, end=END,
                         drive="bulkVelocity 0;", coupled=True, write_every=100,
-                        kernel="type none;", injection="""
-        ores
-        {
-            type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;
-            solidsFraction %r; seed 1; velocity carrier;
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % (CV, d))
+                        kernel="type none;", injection=cases.fill_injection(CV, d))
 foamfields.edit(os.path.join(case, "0/U"), r"riserWall \{[^}]*\}", "riserWall { type slip; }")
-cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
-cases.run(["postProcess", "-func", "writeCellVolumes", "-latestTime", "-case", case],
-          os.path.join(case, "log.writeCellVolumes"))
+cases.solve_coupled(case)
 
 last = os.path.join(case, "%g" % END)
 count = len(foamfields.read_vectors(os.path.join(last, "lagrangian/kinematicCloud/U")))
