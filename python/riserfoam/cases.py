@@ -12,7 +12,7 @@ import shutil
 import subprocess
 
 from . import foamfields as ff
-from . import tables
+from . import pipeflow, tables
 from .carrier import D, UCM, Riser
 
 # the repository (this file is python/riserfoam/cases.py)
@@ -506,8 +506,7 @@ def coupled_pipe_kOmegaSST(case, ub, D=0.1):
     ff.write_dictionary(os.path.join(case, "constant/turbulenceProperties"),
                         "simulationType RAS;\nRAS { RASModel kOmegaSST; turbulence on; "
                         "printCoeffs off; }\n")
-    k = 1.5 * (0.05 * ub) ** 2
-    omega = k ** 0.5 / (0.09 ** 0.25 * 0.07 * D)
+    k, omega = pipeflow.turbulence_estimates(ub, D, intensity=0.05, length=0.07)
     for name, dims, value, wall in (
             ("k", "[0 2 -2 0 0 0 0]", k, "kqRWallFunction"),
             ("omega", "[0 0 -1 0 0 0 0]", omega, "omegaWallFunction"),

@@ -20,11 +20,10 @@ dt = 0.05 s to t = 15 s (dp/dz settled to 1e-9 by then), no particles.
   model's and the wall functions' error on this grid, the same under
   the stock solver; the solver's own is the 1e-8 above.
 """
-import math
 import os
 import shutil
 
-from riserfoam import cases, foamfields, tables
+from riserfoam import cases, foamfields, pipeflow, tables
 from riserfoam.checks import Checks
 
 checks = Checks(width=60)
@@ -58,9 +57,6 @@ stock_dpdz = -RHO * float([l for l in log.splitlines()
 checks.near("dp/dz [Pa/m] against pimpleFoam + meanVelocityForce", dpdz, stock_dpdz, 1e-8)
 
 lam = -dpdz * D / (0.5 * RHO * UB ** 2)
-Re = UB * D / NU
-prandtl = 0.02
-for _ in range(100):
-    prandtl = (2.0 * math.log10(Re * math.sqrt(prandtl)) - 0.8) ** -2
+prandtl = pipeflow.prandtl_friction(UB * D / NU)
 checks.near("friction factor against Prandtl's law (Re = 1e5)", lam, prandtl, 8e-2)
 checks.exit()
