@@ -26,7 +26,7 @@ riserTransportStatistics. Six panels:
     carrier's bulk velocity;
   - the solids fraction against r/R (riserTransportStatistics' annuli of
     equal area at their area-mean radii), averaged from 0.5 s after the
-    fill, and the fill's;
+    fill, and the first sample after the fill;
   - the slip against r/R in the same annuli, averaged over the write times
     from 0.5 s after the fill: the ores' mean v_z less the carrier's mean
     U_z there.
@@ -156,7 +156,8 @@ def main():
     first = np.argmax(filled)
     ax[2, 0].plot(r_annuli, radial[settled].mean(axis=0), "o-",
                   label="mean of t >= %.3g s" % (soi + SETTLE))
-    ax[2, 0].plot(r_annuli, radial[first], "s--", label="the fill (t = %.3g s)" % transport["t"][first])
+    ax[2, 0].plot(r_annuli, radial[first], "s--",
+                  label="first sample after the fill (t = %.3g s)" % transport["t"][first])
     ax[2, 0].axhline(cv, color="k", ls=":", label="C_v = %.3f" % cv)
     ax[2, 0].set(xlabel="r/R (annuli of equal area)", ylabel="C_v", xlim=(0, 1),
                  title="solids fraction")
