@@ -12,7 +12,7 @@ import shutil
 import subprocess
 
 from . import foamfields as ff
-from . import tables
+from . import pipeflow, tables
 from .carrier import D, UCM, Riser
 
 # the repository (this file is python/riserfoam/cases.py)
@@ -608,18 +608,17 @@ def coupled_pipe_RAS(case, ub, D=0.1, model="kOmegaSST", nutWall="nutkWallFuncti
     """Make a coupled_pipe_case turbulent: the RAS model (kOmegaSST,
     kEpsilon, realizableKE) with wall functions (k, omega or epsilon, and
     nut by nutWall at the wall), its fields from a turbulence intensity of
-    5 % of the bulk velocity ub and a length scale l = 0.07 D (omega =
-    sqrt(k)/(Cmu^1/4 l), epsilon = Cmu^3/4 k^3/2 / l, Cmu = 0.09), upwind
+    5 % of the bulk velocity ub and a length scale 0.07 D
+    (pipeflow.turbulence_estimates), upwind
     convection of k and omega or epsilon; the carrier starts as a plug
     flow at ub."""
     ff.write_dictionary(os.path.join(case, "constant/turbulenceProperties"),
                         "simulationType RAS;\nRAS { RASModel %s; turbulence on; "
                         "printCoeffs off; }\n" % model)
-    k = 1.5 * (0.05 * ub) ** 2
-    l = 0.07 * D
-    second = ("omega", "[0 0 -1 0 0 0 0]", k ** 0.5 / (0.09 ** 0.25 * l), "omegaWallFunction") \
+    k, omega, epsilon = pipeflow.turbulence_estimates(ub, D, intensity=0.05, length=0.07)
+    second = ("omega", "[0 0 -1 0 0 0 0]", omega, "omegaWallFunction") \
         if model == "kOmegaSST" else \
-        ("epsilon", "[0 2 -3 0 0 0 0]", 0.09 ** 0.75 * k ** 1.5 / l, "epsilonWallFunction")
+        ("epsilon", "[0 2 -3 0 0 0 0]", epsilon, "epsilonWallFunction")
     for name, dims, value, wall in (
             ("k", "[0 2 -2 0 0 0 0]", k, "kqRWallFunction"), second,
             ("nut", "[0 2 -1 0 0 0 0]", 0.0, nutWall)):

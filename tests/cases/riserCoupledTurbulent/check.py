@@ -60,7 +60,7 @@ import shutil
 
 import numpy as np
 
-from riserfoam import cases, foamfields, tables
+from riserfoam import cases, foamfields, pipeflow, tables
 from riserfoam.checks import Checks
 
 checks = Checks(width=60)
@@ -95,10 +95,7 @@ stock_dpdz = -RHO * float([l for l in log.splitlines()
 checks.near("dp/dz [Pa/m] against pimpleFoam + meanVelocityForce", dpdz, stock_dpdz, 1e-8)
 
 lam = -dpdz * D / (0.5 * RHO * UB ** 2)
-Re = UB * D / NU
-prandtl = 0.02
-for _ in range(100):
-    prandtl = (2.0 * math.log10(Re * math.sqrt(prandtl)) - 0.8) ** -2
+prandtl = pipeflow.prandtl_friction(UB * D / NU)
 checks.near("friction factor against Prandtl's law (Re = 1e5)", lam, prandtl, 5e-2)
 
 # The profile: the distance of each cell centre to the mesh's wall, the
