@@ -57,15 +57,17 @@ def _root(f, lo, hi):
     return 0.5 * (lo + hi)
 
 
-def slip_wen_yu(d, rho_p, eps=1.0, rho=RHO_F, nu=NU, g=G):
+def slip_wen_yu(d, rho_p, eps=1.0, cdre=wen_yu_cdre, rho=RHO_F, nu=NU, g=G):
     """The slip at which the Wen & Yu drag on an ore in a homogeneous
     suspension at voidage eps carries its buoyant weight,
         (pi d mu / 8) (C_D Re)(eps Re) eps^-3.65 u_s = (rho_p - rho) g pi d^3 / 6,
-    Re = u_s d / nu (the drag of WenYuDrag, which holds the pressure
-    gradient's share too: no fluid stress force with it); eps = 1 gives
-    the terminal velocity u_t of the single ore in unbounded fluid"""
-    return terminal_velocity(d, rho_p, lambda Re: wen_yu_cdre(eps * Re) * eps ** -3.65,
-                             rho, nu, g)
+    Re = u_s d / nu, C_D Re of the single sphere cdre (the drag of
+    WenYuDrag, and of wallCorrectedDrag with voidage wenYu without its wall
+    factors: both hold the pressure gradient's share, WenYuDrag without a
+    fluid stress force, wallCorrectedDrag with riserFluidStress, zero in a
+    suspension at rest); eps = 1 gives the terminal velocity u_t of the
+    single ore in unbounded fluid"""
+    return terminal_velocity(d, rho_p, lambda Re: cdre(eps * Re) * eps ** -3.65, rho, nu, g)
 
 
 def n_richardson_zaki(Re_t, a):
@@ -120,6 +122,13 @@ def band_excess(value, bounds):
 # in the form of Anderson & Jackson's model A, divided by eps): it holds the
 # pressure gradient's share, so it goes without the fluid stress force
 WEN_YU_FORCES = """        WenYuDrag { alphac alphac; }
+        riserFrame;
+        gravity;"""
+
+# the riser's own forces in a suspension: wallCorrectedDrag with the Wen &
+# Yu voidage function (model B, with riserFluidStress's rho_f V Du/Dt)
+RISER_WEN_YU_FORCES = """        wallCorrectedDrag { law continuous; voidage wenYu; }
+        riserFluidStress;
         riserFrame;
         gravity;"""
 
@@ -248,7 +257,7 @@ def hindered_reference(cv, scene="1mm", drag="WenYuDrag"):
     eps = 1 - cv
     return {"ut": ut, "Re_t": Re_t, "a": a, "richardsonZaki": richardson_zaki(eps, Re_t, a),
             "garsideAlDibouni": garside_al_dibouni(eps, Re_t),
-            "wenYu": slip_wen_yu(d, ORE_DENSITY, eps) / ut}
+            "wenYu": slip_wen_yu(d, ORE_DENSITY, eps, SINGLE_SPHERE[drag]) / ut}
 
 
 # ------------------------------------------------- the kernel's mesh scene

@@ -118,3 +118,45 @@ TEST(DragCoefficient, RejectsBadArguments)
         EXPECT_NE(std::string(e.what()).find("[0, 1)"), std::string::npos) << e.what();
     }
 }
+
+// The voidage functions against their closed forms. At eps = 1 the drag is
+// the single sphere's; in the Stokes regime (c independent of Re) a
+// homogeneous suspension settles where c eps^-chi w = c u_t, so
+// w/u_t = eps^chi: Richardson & Zaki's slip exponent n - 1 = chi, 3.65 for
+// Wen & Yu and 3.7 for Di Felice (n = 4.65, 4.7). Di Felice's chi is
+// 3.7 - 0.65 = 3.05 where log10 Re_s = 1.5, and tends to 3.7 both ways.
+TEST(DragCoefficient, VoidageFunctions)
+{
+    const riser::WallFactors w(0.05);
+    const double d = 1e-3, mu = 1e-3;
+    for (const auto v : {riser::Voidage::none, riser::Voidage::wenYu, riser::Voidage::diFelice})
+    {
+        for (const double Re : {0.0, 0.5, 30.0, 3000.0})
+        {
+            EXPECT_DOUBLE_EQ(riser::suspensionDragFactor(riser::DragLaw::continuous, w, d, mu,
+                                                         Re, v, 1.0),
+                             riser::dragFactor(riser::DragLaw::continuous, w, d, mu, Re));
+        }
+    }
+
+    // Stokes regime: only the factor eps^-chi remains (C_D Re = 24 K up to
+    // Clift-Gauvin's 0.15 Re^0.687, 4e-6 of it at Re = 1e-8)
+    const double eps = 0.7, tiny = 1e-8;
+    const double single = riser::dragFactor(riser::DragLaw::continuous, w, d, mu, 0.0);
+    EXPECT_NEAR(riser::suspensionDragFactor(riser::DragLaw::continuous, w, d, mu, tiny,
+                                            riser::Voidage::wenYu, eps)/single,
+                std::pow(0.7, -3.65), 1e-5);
+    EXPECT_NEAR(riser::suspensionDragFactor(riser::DragLaw::continuous, w, d, mu, tiny,
+                                            riser::Voidage::diFelice, eps)/single,
+                std::pow(0.7, -3.7), 1e-5);
+
+    // Di Felice's dip: Re_s = 10^1.5
+    const double ReS = std::pow(10.0, 1.5);
+    EXPECT_NEAR(riser::voidageExponent(riser::Voidage::diFelice, ReS), 3.05, 1e-14);
+    EXPECT_NEAR(riser::suspensionDragFactor(riser::DragLaw::paper, w, d, mu, ReS/eps,
+                                            riser::Voidage::diFelice, eps),
+                riser::dragFactor(riser::DragLaw::paper, w, d, mu, ReS)*std::pow(eps, -3.05),
+                1e-12*riser::dragFactor(riser::DragLaw::paper, w, d, mu, ReS));
+    EXPECT_NEAR(riser::voidageExponent(riser::Voidage::diFelice, 1e6), 3.7, 1e-3);
+    EXPECT_EQ(riser::voidageExponent(riser::Voidage::diFelice, 0.0), 3.7);
+}

@@ -106,6 +106,57 @@ inline double dragFactor(DragLaw law, const WallFactors& w, double d, double mu,
     return M_PI*d*mu/8.0*dragCoefficientTimesRe(law, Re, w);
 }
 
+//- Voidage functions of the drag in a suspension of carrier volume
+//  fraction eps (none: the single sphere's drag):
+//    - wenYu:    Wen & Yu (1966), eps^-chi with chi = 3.65;
+//    - diFelice: Di Felice (1994), chi = 3.7 - 0.65 exp(-(1.5 - log10 Re_s)^2/2),
+//                Re_s = eps Re_p the Reynolds number of the superficial slip.
+//  Both correlate the drag F_A of Anderson & Jackson's model A (the particle
+//  also feels -V grad p): F_A = F_1(eps w) eps^-chi, F_1 the single sphere's
+//  drag at the superficial slip eps w. With the fluid stress taken as
+//  rho_f V Du/Dt (model B; Zhou, Kuang, Chu & Yu 2010) the drag is
+//  F_B = F_A/eps = c(Re_s) eps^-chi w, c the single sphere's dragFactor
+//  evaluated at Re_s: suspensionDragFactor.
+enum class Voidage { none, wenYu, diFelice };
+
+//- The exponent chi of the voidage function at the superficial Reynolds
+//  number Re_s >= 0 (Di Felice's Stokes limit, 3.7, at Re_s = 0)
+inline double voidageExponent(Voidage v, double ReS)
+{
+    switch (v)
+    {
+        case Voidage::wenYu:
+            return 3.65;
+        case Voidage::diFelice:
+        {
+            if (!(ReS > 0))
+            {
+                return 3.7;
+            }
+            const double t = 1.5 - std::log10(ReS);
+            return 3.7 - 0.65*std::exp(-0.5*t*t);
+        }
+        case Voidage::none:
+            break;
+    }
+    return 0;
+}
+
+//- The drag factor c of a sphere in a suspension of carrier volume
+//  fraction eps in (0, 1] (model B, see Voidage): F_D = c w with
+//  c = dragFactor(Re_s) eps^-chi(Re_s), Re_s = eps Re; dragFactor itself
+//  for Voidage::none
+inline double suspensionDragFactor(DragLaw law, const WallFactors& w, double d, double mu,
+                                   double Re, Voidage v, double eps)
+{
+    if (v == Voidage::none)
+    {
+        return dragFactor(law, w, d, mu, Re);
+    }
+    const double ReS = eps*Re;
+    return dragFactor(law, w, d, mu, ReS)*std::pow(eps, -voidageExponent(v, ReS));
+}
+
 //- The drag force F_D = c w on a sphere of diameter d with slip
 //  w = u - v in a fluid of density rho and viscosity mu
 inline Vector dragForce(DragLaw law, const WallFactors& factors, double d, double rho,

@@ -28,6 +28,24 @@ Foam::WallCorrectedDragForce<CloudType>::wallFactors(const scalar d) const
 }
 
 
+template<class CloudType>
+Foam::scalar
+Foam::WallCorrectedDragForce<CloudType>::carrierFraction(const label celli) const
+{
+    if (!this->mesh().template foundObject<volScalarField>("alphac"))
+    {
+        FatalIOErrorInFunction(this->coeffs())
+            << "entry 'voidage' of " << this->coeffs().name() << " needs the"
+            << " carrier's volume fraction alphac, which riserCoupledFoam"
+            << " computes; this solver computes none (one-way: the carrier"
+            << " is not displaced by the particles). Use 'voidage none;'"
+            << " or leave it out" << exit(FatalIOError);
+    }
+    return
+        this->mesh().template lookupObject<volScalarField>("alphac")[celli];
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -41,6 +59,7 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
     carrier_(carrierFlow::New(owner.U())),
     law_(modelEntries::dragLaw(this->coeffs())),
+    voidage_(modelEntries::dragVoidage(this->coeffs())),
     pipeDiameter_
     (
         modelEntries::pipeDiameter
@@ -50,7 +69,17 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
     ),
     lastDiameter_(-1),
     lastFactors_(0)
-{}
+{
+    if (voidage_ != riser::Voidage::none && carrier_.exact())
+    {
+        FatalIOErrorInFunction(this->coeffs())
+            << "entry 'voidage' of " << this->coeffs().name() << " with"
+            << " 'carrier exact' (constant/riserProperties): the analytic"
+            << " carrier is one-way and has no volume fraction; use"
+            << " 'voidage none;' or a computed carrier (riserCoupledFoam)"
+            << exit(FatalIOError);
+    }
+}
 
 
 template<class CloudType>
@@ -62,6 +91,7 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
     ParticleForce<CloudType>(df),
     carrier_(df.carrier_),
     law_(df.law_),
+    voidage_(df.voidage_),
     pipeDiameter_(df.pipeDiameter_),
     lastDiameter_(df.lastDiameter_),
     lastFactors_(df.lastFactors_)
@@ -86,7 +116,13 @@ Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
     // F = (pi d^2/8) rho C_D |w| w = Sp w
     if (!carrier_.exact())
     {
-        return forceSuSp(Zero, riser::dragFactor(law_, factors, p.d(), muc, Re));
+        const scalar eps =
+            voidage_ == riser::Voidage::none ? 1 : carrierFraction(p.cell());
+        return forceSuSp
+        (
+            Zero,
+            riser::suspensionDragFactor(law_, factors, p.d(), muc, Re, voidage_, eps)
+        );
     }
 
     const vector u = carrier_.velocity(p, td.Uc());
