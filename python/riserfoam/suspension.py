@@ -241,7 +241,8 @@ def hindered_case(case, cv, end, forces=WEN_YU_FORCES, scene="1mm"):
 
 
 # the single sphere's drag of each drag law of the scenes
-SINGLE_SPHERE = {"WenYuDrag": wen_yu_cdre, "wallCorrectedDrag": clift_gauvin_cdre}
+SINGLE_SPHERE = {"WenYuDrag": wen_yu_cdre, "wallCorrectedDrag": clift_gauvin_cdre,
+                 "wallCorrectedDrag_wenYu": clift_gauvin_cdre}
 
 
 def hindered_reference(cv, scene="1mm", drag="WenYuDrag"):
