@@ -5,15 +5,26 @@ along, cyclic ends), ores of d = 10 mm (volume pi d^3/6) deposited near
 both cyclic ends, near the wall and at the axis, and momentum-like vector
 sources, spread over b = 3 d in 4 pseudo-steps:
 
-- conservation: the sum of theta V and each component of the summed
-  sources before and after, relative 1e-12. The fluxes of each implicit
-  step cancel pairwise (cyclic faces included) and vanish at the wall, so
-  what is left is the linear solver's residual (normalised 1e-14) and the
-  round-off of sums over 11,520 cells (about 1e-16 x sqrt(11520) each):
-  1e-12 is a hundred times above both. Vector sources of both signs are
-  measured against the sum of their magnitudes;
+- conservation, at the default solver tolerance (1e-6): the sum of theta
+  V and each component of the summed sources before and after, relative
+  1e-12. The fluxes of each implicit step cancel pairwise (cyclic faces
+  included) and vanish at the wall, and the kernel puts the solves'
+  residual back (particleKernel.H), so what is left is the round-off of
+  sums over 11,520 cells (about 1e-16 x sqrt(11520) each): 1e-12 is a
+  hundred times above it. Vector sources of both signs are measured
+  against the sum of their magnitudes;
 - the spread stays non-negative (the matrix is an M-matrix): the smallest
   theta is not below -1e-12 of the largest (round-off);
+- the default tolerance against converged solves (tolerance 1e-14): the
+  difference in sum |theta - theta_conv| V, and in sum |amount -
+  amount_conv| per component, is at most 2 N tol times sum theta V (sum
+  |amounts|). The bound: A = V - dtau L has column sums V_i (L's columns
+  sum to zero), so V^T A^-1 = 1^T and a residual r leaves an error e with
+  sum V |e| <= |r|_1 <= tol sum |phi| V; the later steps do not enlarge
+  it (A^-1 V is a contraction in that norm), so N steps leave at most N
+  tol, and restoring the sum adds at most as much again;
+- the checks below of the discrete operator itself run converged
+  (tolerance 1e-14), so that they see the operator and not the solver:
 - the cyclic ends pass the field through as an inner face would: an ore
   in the lowest cell layer spreads through the ends as the same ore 12
   layers up spreads inside the riser, the layers' sums at +-k layers
@@ -43,6 +54,8 @@ from riserfoam import kernel
 d = 0.01
 vp = math.pi * d ** 3 / 6
 KERNEL = "type diffusion; width 3; widthUnit diameters; pseudoSteps 4;"
+N_STEPS, TOLERANCE = 4, 1e-6       # pseudoSteps above; the default tolerance
+CONVERGED = KERNEL + " tolerance 1e-14;"
 # generic points (not on a face of the grid, where serial and parallel
 # runs may pick different cells), two of them next to the processor
 # boundary at mid-height
@@ -82,6 +95,21 @@ print("smallest theta %.3e, largest %.3e" % (theta.min(), theta.max()))
 if theta.min() < -1e-12 * theta.max():
     print("FAILED: the spread went negative")
     checks.failures += 1
+default_cells = s.cells
+
+# --- serial, static, converged: the reference of the checks below
+static = riser("staticConverged")
+s = kernel.spread(static, CONVERGED, d, DEPOSITS, SOURCES)
+conservation("static, converged", s)
+bound = 2 * N_STEPS * TOLERANCE
+volume = s.cells[:, 3]
+checks.near("default tolerance: sum |theta - converged| V / sum theta V",
+            (np.abs(default_cells[:, 4] - s.cells[:, 4]) * volume).sum(), 0, bound,
+            (s.cells[:, 4] * volume).sum())
+scale = sum(np.abs(v).sum() for _, v in SOURCES)
+for i, axis in enumerate("xyz"):
+    checks.near("default tolerance: sum |source %s - converged| / sum |sources|" % axis,
+                np.abs(default_cells[:, 5 + i] - s.cells[:, 5 + i]).sum(), 0, bound, scale)
 static_cells = s.cells
 
 # --- cyclic ends: an ore in the lowest layer against the same ore 12
@@ -89,7 +117,7 @@ static_cells = s.cells
 layers = []
 for name, z in (("ends", 0.0042), ("middle", 0.1042)):
     case = riser(name)
-    s = kernel.spread(case, KERNEL, d, [((0.0003, 0.0002, z), vp)])
+    s = kernel.spread(case, CONVERGED, d, [((0.0003, 0.0002, z), vp)])
     layer = np.floor(s.cells[:, 2] / (0.2 / 24)).astype(int)
     layers.append((np.bincount(layer, weights=s.cells[:, 3]),
                    np.bincount(layer, weights=s.cells[:, 4] * s.cells[:, 3])))
@@ -113,7 +141,7 @@ shutil.copy(os.path.join(ROOT, "tutorials/riser/oscillatingContactMovingMesh/con
 ff.set_entry(os.path.join(moving, "system/controlDict"), "endTime", repr(1 / 12))
 ff.set_entry(os.path.join(moving, "system/controlDict"), "deltaT", repr(1 / 120))
 shift = np.array([0.1, 0.0, 0.0])
-s = kernel.spread(moving, KERNEL, d, [(tuple(np.array(p) + shift), v) for p, v in DEPOSITS],
+s = kernel.spread(moving, CONVERGED, d, [(tuple(np.array(p) + shift), v) for p, v in DEPOSITS],
                   [(tuple(np.array(p) + shift), v) for p, v in SOURCES])
 conservation("moving mesh", s)
 checks.near("moving mesh: cell centres shifted by A along x",
@@ -126,7 +154,7 @@ parallel = riser("parallel")
 ff.write_dictionary(os.path.join(parallel, "system/decomposeParDict"),
                     "numberOfSubdomains 2;\nmethod simple;\ncoeffs { n (1 1 2); }\n")
 run(["decomposePar", "-case", parallel], os.path.join(parallel, "log.decomposePar"))
-s = kernel.spread(parallel, KERNEL, d, DEPOSITS, SOURCES, parallel=2)
+s = kernel.spread(parallel, CONVERGED, d, DEPOSITS, SOURCES, parallel=2)
 conservation("2 processors", s)
 # each processor's cell is the serial cell at its centre (the nearest)
 centres = static_cells[:, :3]

@@ -10,6 +10,7 @@
 #include "laplacianScheme.H"
 #include "zeroGradientFvPatchFields.H"
 #include "IStringStream.H"
+#include "PstreamCombineReduceOps.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -44,10 +45,376 @@ particleKernel::kernelType readType(const dictionary& dict)
     {
         checkedEntry::allowedKeys
         (
-            dict, {"type", "width", "widthUnit", "pseudoSteps"}
+            dict, {"type", "width", "widthUnit", "pseudoSteps", "tolerance"}
         );
     }
     return type;
+}
+
+//- Sum each entry of a list of per-processor partial sums over the
+//  processors (one reduction for all)
+void combineSums(scalarField& sums)
+{
+    Pstream::listCombineGather(sums, plusEqOp<scalar>());
+    Pstream::listCombineScatter(sums);
+}
+
+
+//- The reciprocal pivots 1/d_i of the incomplete Cholesky factorisation
+//  without fill-in, L D^-1 L^T with L's strict lower part the matrix's, of
+//  the symmetric matrix A (DIC): d_i = a_ii - sum over the faces f = (j, i),
+//  j < i, of a_f^2/d_j
+scalarField dicReciprocal(const lduMatrix& A)
+{
+    scalarField d(A.diag());
+    const labelUList& lower = A.lduAddr().lowerAddr();
+    const labelUList& upper = A.lduAddr().upperAddr();
+    const scalarField& a = A.upper();
+    forAll(a, f)
+    {
+        d[upper[f]] -= sqr(a[f])/d[lower[f]];
+    }
+    return 1/d;
+}
+
+
+//- Preconditioned conjugate gradients for K fields at once on one
+//  symmetric matrix A (the kernel's pseudo-step), the DIC preconditioner:
+//  the fields interleaved (entry K*cell + k), so that each face's
+//  addressing and coefficient are read once for the K fields and their
+//  values share cache lines; each field has its own step lengths and
+//  stops on its own residual
+template<label K>
+class lockstepPCG
+{
+    const lduMatrix& A_;
+    const scalarField& rD_;
+    const FieldField<Field, scalar>& bouCoeffs_;
+    const lduInterfaceFieldPtrsList& interfaces_;
+    const label n_;
+
+    //- Work fields, interleaved: solution, residual, preconditioned
+    //  residual, direction, A times direction
+    scalarField x_, r_, w_, p_, q_;
+
+    //- The cells next to the coupled patches (cyclic, processor)
+    labelList couplingCells_;
+
+    //- One field's values and its interface contribution (the coupled
+    //  patches' updates take one scalar field at a time), set at the
+    //  coupling cells
+    scalarField one_, oneResult_;
+
+    //- y = A v (interleaved), the coupled patches included
+    void multiply(scalarField& y, const scalarField& v)
+    {
+        const scalar* const __restrict__ d = A_.diag().begin();
+        const scalar* const __restrict__ a = A_.upper().begin();
+        const label* const __restrict__ lower = A_.lduAddr().lowerAddr().begin();
+        const label* const __restrict__ upper = A_.lduAddr().upperAddr().begin();
+        const scalar* const __restrict__ vp = v.begin();
+        scalar* const __restrict__ yp = y.begin();
+        for (label i = 0; i < n_; ++i)
+        {
+            for (label k = 0; k < K; ++k)
+            {
+                yp[K*i + k] = d[i]*vp[K*i + k];
+            }
+        }
+        const label nFaces = A_.upper().size();
+        for (label f = 0; f < nFaces; ++f)
+        {
+            const scalar* __restrict__ vl = vp + K*lower[f];
+            const scalar* __restrict__ vu = vp + K*upper[f];
+            scalar* __restrict__ yl = yp + K*lower[f];
+            scalar* __restrict__ yu = yp + K*upper[f];
+            for (label k = 0; k < K; ++k)
+            {
+                yu[k] += a[f]*vl[k];
+            }
+            for (label k = 0; k < K; ++k)
+            {
+                yl[k] += a[f]*vu[k];
+            }
+        }
+        // the coupled patches read and write their cells only
+        for (label k = 0; k < K; ++k)
+        {
+            for (const label i : couplingCells_)
+            {
+                one_[i] = vp[K*i + k];
+                oneResult_[i] = 0;
+            }
+            A_.initMatrixInterfaces
+            (
+                true, bouCoeffs_, interfaces_, one_, oneResult_, 0
+            );
+            A_.updateMatrixInterfaces
+            (
+                true, bouCoeffs_, interfaces_, one_, oneResult_, 0
+            );
+            for (const label i : couplingCells_)
+            {
+                yp[K*i + k] += oneResult_[i];
+            }
+        }
+    }
+
+    //- w = M^-1 r (interleaved), M = (D + L) D^-1 (D + L^T) the DIC
+    //  factorisation (rD = 1/d): a forward and a backward sweep over the
+    //  faces
+    void precondition()
+    {
+        const label* const __restrict__ lower = A_.lduAddr().lowerAddr().begin();
+        const label* const __restrict__ upper = A_.lduAddr().upperAddr().begin();
+        const scalar* const __restrict__ a = A_.upper().begin();
+        const scalar* const __restrict__ rd = rD_.begin();
+        scalar* const w = w_.begin();
+        for (label i = 0; i < n_; ++i)
+        {
+            for (label k = 0; k < K; ++k)
+            {
+                w[K*i + k] = rd[i]*r_[K*i + k];
+            }
+        }
+        const label nFaces = A_.upper().size();
+        for (label f = 0; f < nFaces; ++f)
+        {
+            const scalar c = rd[upper[f]]*a[f];
+            const scalar* __restrict__ from = w + K*lower[f];
+            scalar* __restrict__ to = w + K*upper[f];
+            for (label k = 0; k < K; ++k)
+            {
+                to[k] -= c*from[k];
+            }
+        }
+        for (label f = nFaces - 1; f >= 0; --f)
+        {
+            const scalar c = rd[lower[f]]*a[f];
+            const scalar* __restrict__ from = w + K*upper[f];
+            scalar* __restrict__ to = w + K*lower[f];
+            for (label k = 0; k < K; ++k)
+            {
+                to[k] -= c*from[k];
+            }
+        }
+    }
+
+    //- Per field, the sum over the cells of u v (all processors)
+    FixedList<scalar, K> dot(const scalarField& u, const scalarField& v) const
+    {
+        scalarField sums(K, Zero);
+        for (label i = 0; i < n_; ++i)
+        {
+            for (label k = 0; k < K; ++k)
+            {
+                sums[k] += u[K*i + k]*v[K*i + k];
+            }
+        }
+        combineSums(sums);
+        FixedList<scalar, K> out;
+        for (label k = 0; k < K; ++k)
+        {
+            out[k] = sums[k];
+        }
+        return out;
+    }
+
+    //- Per field, the 1-norm of the residual (all processors)
+    FixedList<scalar, K> residualNorm() const
+    {
+        scalarField sums(K, Zero);
+        for (label i = 0; i < n_; ++i)
+        {
+            for (label k = 0; k < K; ++k)
+            {
+                sums[k] += mag(r_[K*i + k]);
+            }
+        }
+        combineSums(sums);
+        FixedList<scalar, K> out;
+        for (label k = 0; k < K; ++k)
+        {
+            out[k] = sums[k];
+        }
+        return out;
+    }
+
+public:
+
+    lockstepPCG
+    (
+        const lduMatrix& A,
+        const scalarField& rD,
+        const FieldField<Field, scalar>& bouCoeffs,
+        const lduInterfaceFieldPtrsList& interfaces
+    )
+    :
+        A_(A),
+        rD_(rD),
+        bouCoeffs_(bouCoeffs),
+        interfaces_(interfaces),
+        n_(rD.size()),
+        x_(K*n_),
+        r_(K*n_),
+        w_(K*n_),
+        p_(K*n_),
+        q_(K*n_),
+        one_(n_, Zero),
+        oneResult_(n_, Zero)
+    {
+        labelHashSet cells;
+        forAll(interfaces_, patchi)
+        {
+            if (interfaces_.set(patchi))
+            {
+                cells.insert(A_.lduAddr().patchAddr(patchi));
+            }
+        }
+        couplingCells_ = cells.sortedToc();
+    }
+
+    //- Solve A x = V x0 for the K fields fields[first .. first + K - 1]
+    //  in place, from x0 (the previous pseudo-step), to residuals of at
+    //  most stop[k] in the 1-norm; returns the iterations of each field
+    FixedList<label, K> solve
+    (
+        List<scalarField>& fields,
+        const label first,
+        const scalarField& V,
+        const FixedList<scalar, K>& stop
+    )
+    {
+        for (label k = 0; k < K; ++k)
+        {
+            const scalarField& f = fields[first + k];
+            for (label i = 0; i < n_; ++i)
+            {
+                x_[K*i + k] = f[i];
+            }
+        }
+        multiply(q_, x_);
+        for (label i = 0; i < n_; ++i)
+        {
+            for (label k = 0; k < K; ++k)
+            {
+                r_[K*i + k] = V[i]*x_[K*i + k] - q_[K*i + k];
+            }
+        }
+        FixedList<label, K> iterations(label(0));
+        FixedList<bool, K> active;
+        FixedList<scalar, K> res = residualNorm();
+        FixedList<scalar, K> rho(scalar(0));
+        for (label k = 0; k < K; ++k)
+        {
+            active[k] = res[k] > stop[k];
+        }
+        p_ = Zero;
+        for (label iter = 0; active.found(true); ++iter)
+        {
+            if (iter == maxIterations)
+            {
+                WarningInFunction
+                    << "stopped after " << iter << " iterations at"
+                    << " residuals " << res << " (to reach " << stop
+                    << "): the sum of each spread field is restored"
+                    << " afterwards" << endl;
+                break;
+            }
+            precondition();
+            const FixedList<scalar, K> rw = dot(r_, w_);
+            FixedList<scalar, K> beta(scalar(0));
+            for (label k = 0; k < K; ++k)
+            {
+                beta[k] = iter > 0 && active[k] ? rw[k]/rho[k] : 0;
+                rho[k] = rw[k];
+            }
+            for (label i = 0; i < n_; ++i)
+            {
+                for (label k = 0; k < K; ++k)
+                {
+                    p_[K*i + k] = w_[K*i + k] + beta[k]*p_[K*i + k];
+                }
+            }
+            multiply(q_, p_);
+            const FixedList<scalar, K> pq = dot(p_, q_);
+            FixedList<scalar, K> alpha(scalar(0));
+            for (label k = 0; k < K; ++k)
+            {
+                if (active[k] && pq[k] > 0)
+                {
+                    alpha[k] = rho[k]/pq[k];
+                    ++iterations[k];
+                }
+            }
+            for (label i = 0; i < n_; ++i)
+            {
+                for (label k = 0; k < K; ++k)
+                {
+                    x_[K*i + k] += alpha[k]*p_[K*i + k];
+                    r_[K*i + k] -= alpha[k]*q_[K*i + k];
+                }
+            }
+            res = residualNorm();
+            for (label k = 0; k < K; ++k)
+            {
+                active[k] = active[k] && pq[k] > 0 && res[k] > stop[k];
+            }
+        }
+        for (label k = 0; k < K; ++k)
+        {
+            scalarField& f = fields[first + k];
+            for (label i = 0; i < n_; ++i)
+            {
+                f[i] = x_[K*i + k];
+            }
+        }
+        return iterations;
+    }
+
+    //- A solve stops (with a warning) after so many iterations
+    static constexpr label maxIterations = 1000;
+};
+
+
+//- The pseudo-steps of the fields fields[first .. first + K - 1]
+//  (debug: each step's iterations printed)
+template<label K>
+void pseudoSteps
+(
+    List<scalarField>& fields,
+    const label first,
+    const label nSteps,
+    const scalarField& V,
+    const scalarField& stop,
+    const lduMatrix& A,
+    const scalarField& rD,
+    const FieldField<Field, scalar>& bouCoeffs,
+    const lduInterfaceFieldPtrsList& interfaces,
+    const bool report
+)
+{
+    lockstepPCG<K> solver(A, rD, bouCoeffs, interfaces);
+    FixedList<scalar, K> stopK;
+    for (label k = 0; k < K; ++k)
+    {
+        stopK[k] = stop[first + k];
+    }
+    for (label step = 0; step < nSteps; ++step)
+    {
+        const FixedList<label, K> iterations =
+            solver.solve(fields, first, V, stopK);
+        if (report)
+        {
+            Info<< "particleKernel: pseudo-step " << step
+                << ", iterations of the " << K << " fields:";
+            for (const label n : iterations)
+            {
+                Info<< ' ' << n;
+            }
+            Info<< endl;
+        }
+    }
 }
 
 } // End anonymous namespace
@@ -87,7 +454,16 @@ Foam::particleKernel::particleKernel
       ? checkedEntry::count(dict, "pseudoSteps", 1, 100, 4)
       : 0
     ),
-    largestDiameter_(0)
+    tolerance_
+    (
+        type_ == kernelType::diffusion
+      ? checkedEntry::inRange(dict, "tolerance", 1e-15, true, 1e-3, true, 1e-6)
+      : 0
+    ),
+    largestDiameter_(0),
+    sizesTimeIndex_(-1),
+    largestCellSize_(0),
+    crossSection_(0)
 {
     if (type_ == kernelType::diffusion && unit_ == widthUnit::metres)
     {
@@ -146,8 +522,20 @@ Foam::scalar Foam::particleKernel::bandwidth(const scalar dMax) const
         FatalErrorInFunction
             << "the kernel of type none has no bandwidth" << exit(FatalError);
     }
-    const scalar h = largestCellSize();
-    const scalar D = crossSection();
+    // the mesh's sizes: once, or once per time step on a moving mesh (the
+    // riser's moves rigidly and keeps them, a mesh moved otherwise may not)
+    if
+    (
+        sizesTimeIndex_ < 0
+     || (mesh_.changing() && sizesTimeIndex_ != mesh_.time().timeIndex())
+    )
+    {
+        largestCellSize_ = largestCellSize();
+        crossSection_ = crossSection();
+        sizesTimeIndex_ = mesh_.time().timeIndex();
+    }
+    const scalar h = largestCellSize_;
+    const scalar D = crossSection_;
     if (unit_ == widthUnit::metres)
     {
         checkedEntry::checkRange(dict_, "width", width_, h, true, D, true);
@@ -211,14 +599,11 @@ void Foam::particleKernel::diffuse
 ) const
 {
     const scalar dtau = sqr(b)/4/pseudoSteps_;
+    const scalarField& V = mesh_.V().field();
 
-    // the field the matrix solves for; each density in turn
+    // The matrix V - dtau laplacian, its coupled patches' diagonal share
+    // included (cyclic, processor), as OpenFOAM's segregated solve sets it
     tmp<volScalarField> twork(workField("spread"));
-    volScalarField& phi = twork.ref();
-
-    // the two-point Laplacian (no explicit non-orthogonal part: an
-    // M-matrix, non-negative deposits stay non-negative), whatever the
-    // case's fvSchemes say
     IStringStream schemeSpec("Gauss linear uncorrected");
     tmp<fv::laplacianScheme<scalar, scalar>> laplacian
     (
@@ -238,53 +623,93 @@ void Foam::particleKernel::diffuse
         mesh_,
         dimensionedScalar("dtau", dimArea, dtau)
     );
-
-    // V phi - dtau laplacian(phi) = V phi_old: the matrix is the same for
-    // every step and density (the solver leaves it unchanged), only the
-    // source changes
-    fvScalarMatrix eq
+    const fvScalarMatrix eq
     (
-        fvm::Sp(dimensionedScalar("one", dimless, 1), phi)
-      - laplacian->fvmLaplacian(dtauf, phi)
+        fvm::Sp(dimensionedScalar("one", dimless, 1), twork.ref())
+      - laplacian->fvmLaplacian(dtauf, twork.ref())
     );
+    lduMatrix A(eq);
+    A.diag() = eq.D();
+    const lduInterfaceFieldPtrsList interfaces
+    (
+        twork().boundaryField().scalarInterfaces()
+    );
+    const FieldField<Field, scalar>& bouCoeffs = eq.boundaryCoeffs();
+    const scalarField rD(dicReciprocal(A));
 
-    dictionary controls;
-    controls.add("solver", "PCG");
-    controls.add("preconditioner", "DIC");
-    controls.add("tolerance", 1e-14);
-    controls.add("relTol", 0);
-    controls.add("maxIter", 1000);
-
-    // the pseudo-steps' solver lines are not the flow's: kept out of the log
-    const int printing = solverPerformance::debug;
-    solverPerformance::debug = 0;
-    for (scalarField& density : densities)
+    const label nFields = densities.size();
+    scalarField total0(nFields), stop(nFields), lowest(nFields);
+    forAll(densities, k)
     {
-        phi.primitiveFieldRef() = density;
-        phi.correctBoundaryConditions();
-        for (label step = 0; step < pseudoSteps_; ++step)
-        {
-            eq.source() = mesh_.V().field()*phi.primitiveField();
-            const solverPerformance perf = eq.solve(controls);
-            if (debug)
-            {
-                Info<< "particleKernel: pseudo-step " << step << ", "
-                    << perf.nIterations() << " iterations, residual "
-                    << perf.initialResidual() << " -> "
-                    << perf.finalResidual() << endl;
-            }
-            if (!perf.converged() && perf.finalResidual() > 1e-10)
-            {
-                WarningInFunction
-                    << "pseudo-step " << step << " left the residual "
-                    << perf.finalResidual() << " after "
-                    << perf.nIterations() << " iterations: the sum of the"
-                    << " spread field is kept to about that" << endl;
-            }
-        }
-        density = phi.primitiveField();
+        total0[k] = sum(V*densities[k]);
+        stop[k] = tolerance_*sum(V*mag(densities[k]));
+        lowest[k] = min(densities[k]);
     }
-    solverPerformance::debug = printing;
+    combineSums(total0);
+    combineSums(stop);
+    Pstream::listCombineGather(lowest, minEqOp<scalar>());
+    Pstream::listCombineScatter(lowest);
+
+    // the fields in groups of up to four, each group's solves in lock-step
+    for (label first = 0; first < nFields; first += 4)
+    {
+        switch (min(label(4), nFields - first))
+        {
+            case 1:
+                pseudoSteps<1>
+                (
+                    densities, first, pseudoSteps_, V, stop, A, rD,
+                    bouCoeffs, interfaces, debug
+                );
+                break;
+            case 2:
+                pseudoSteps<2>
+                (
+                    densities, first, pseudoSteps_, V, stop, A, rD,
+                    bouCoeffs, interfaces, debug
+                );
+                break;
+            case 3:
+                pseudoSteps<3>
+                (
+                    densities, first, pseudoSteps_, V, stop, A, rD,
+                    bouCoeffs, interfaces, debug
+                );
+                break;
+            default:
+                pseudoSteps<4>
+                (
+                    densities, first, pseudoSteps_, V, stop, A, rD,
+                    bouCoeffs, interfaces, debug
+                );
+                break;
+        }
+    }
+
+    // The sums kept exactly: a field deposited non-negative stays so (the
+    // exact solution does; the iterate's round-off and tolerance
+    // undershoots are cut), then the defect of sum(phi V), of the order of
+    // the tolerance, goes back in proportion to |phi|, where the field is
+    scalarField total(nFields), weight(nFields);
+    forAll(densities, k)
+    {
+        scalarField& phi = densities[k];
+        if (lowest[k] >= 0)
+        {
+            phi = max(phi, scalar(0));
+        }
+        total[k] = sum(V*phi);
+        weight[k] = sum(V*mag(phi));
+    }
+    combineSums(total);
+    combineSums(weight);
+    forAll(densities, k)
+    {
+        if (weight[k] > 0)
+        {
+            densities[k] += ((total0[k] - total[k])/weight[k])*mag(densities[k]);
+        }
+    }
 }
 
 

@@ -108,8 +108,23 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::particleKernel::SU
     }
     volVectorField::Internal uTrans("particleKernel:UTrans", cloud.UTrans());
     volScalarField::Internal uCoeff("particleKernel:UCoeff", cloud.UCoeff());
-    spreadAmount(uTrans, dMax);
-    spreadAmount(uCoeff, dMax);
+    if (spreads(dMax))
+    {
+        // the four fields in one pass of the kernel's solves, as densities
+        const scalarField& V = mesh_.V().field();
+        List<scalarField> densities(vector::nComponents + 1);
+        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
+        {
+            densities[cmpt] = uTrans.field().component(cmpt)/V;
+        }
+        densities[vector::nComponents] = uCoeff.field()/V;
+        diffuse(densities, bandwidth(dMax));
+        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
+        {
+            uTrans.field().replace(cmpt, densities[cmpt]*V);
+        }
+        uCoeff.field() = densities[vector::nComponents]*V;
+    }
 
     // per unit volume and time; the implicit part on the new U, its
     // explicit counterpart on the current U: at convergence the source is
