@@ -57,17 +57,50 @@ def _root(f, lo, hi):
     return 0.5 * (lo + hi)
 
 
+def chi_wen_yu(eps, ReS):
+    """The exponent of Wen & Yu's (1966) voidage function eps^-chi: 3.65"""
+    return 3.65
+
+
+def chi_rong(eps, ReS):
+    """The exponent of the voidage function eps^-chi of Rong, Dong & Yu
+    (2013) at voidage eps and Re_s = eps Re (the superficial slip's),
+        chi = 2.65 (eps + 1) - (5.3 - 3.5 eps) eps^2 exp(-(1.5 - log10 Re_s)^2 / 2),
+    the dip vanishing at Re_s = 0 (riser::voidageExponent, Voidage::rong)"""
+    dip = math.exp(-0.5 * (1.5 - math.log10(ReS)) ** 2) if ReS > 0 else 0.0
+    return 2.65 * (eps + 1) - (5.3 - 3.5 * eps) * eps ** 2 * dip
+
+
+def slip_homogeneous(d, rho_p, eps=1.0, cdre=wen_yu_cdre, chi=chi_wen_yu, rho=RHO_F, nu=NU,
+                     g=G):
+    """The slip at which the drag with the voidage function eps^-chi on an
+    ore in a homogeneous suspension at voidage eps carries its buoyant
+    weight,
+        (pi d mu / 8) (C_D Re)(Re_s) eps^-chi(eps, Re_s) u_s = (rho_p - rho) g pi d^3 / 6,
+    Re = u_s d / nu, Re_s = eps Re, C_D Re of the single sphere cdre and
+    chi(eps, Re_s) the voidage function's exponent (chi_wen_yu, chi_rong).
+    That is the drag of WenYuDrag (cdre wen_yu_cdre, chi_wen_yu) and of
+    wallCorrectedDrag with a voidage function without its wall factors
+    (clift_gauvin_cdre): both hold the pressure gradient's share,
+    WenYuDrag without a fluid stress force, wallCorrectedDrag with
+    riserFluidStress, zero in a suspension at rest. eps = 1 gives the
+    terminal velocity u_t of the single ore in unbounded fluid"""
+    return terminal_velocity(d, rho_p, lambda Re: cdre(eps * Re) * eps ** -chi(eps, eps * Re),
+                             rho, nu, g)
+
+
 def slip_wen_yu(d, rho_p, eps=1.0, cdre=wen_yu_cdre, rho=RHO_F, nu=NU, g=G):
-    """The slip at which the Wen & Yu drag on an ore in a homogeneous
-    suspension at voidage eps carries its buoyant weight,
-        (pi d mu / 8) (C_D Re)(eps Re) eps^-3.65 u_s = (rho_p - rho) g pi d^3 / 6,
-    Re = u_s d / nu, C_D Re of the single sphere cdre (the drag of
-    WenYuDrag, and of wallCorrectedDrag with voidage wenYu without its wall
-    factors: both hold the pressure gradient's share, WenYuDrag without a
-    fluid stress force, wallCorrectedDrag with riserFluidStress, zero in a
-    suspension at rest); eps = 1 gives the terminal velocity u_t of the
-    single ore in unbounded fluid"""
-    return terminal_velocity(d, rho_p, lambda Re: cdre(eps * Re) * eps ** -3.65, rho, nu, g)
+    """The Wen & Yu balance of a homogeneous suspension, slip_homogeneous
+    with chi = 3.65:
+        (pi d mu / 8) (C_D Re)(eps Re) eps^-3.65 u_s = (rho_p - rho) g pi d^3 / 6"""
+    return slip_homogeneous(d, rho_p, eps, cdre, chi_wen_yu, rho, nu, g)
+
+
+def slip_rong(d, rho_p, eps=1.0, cdre=clift_gauvin_cdre, rho=RHO_F, nu=NU, g=G):
+    """The balance of a homogeneous suspension with Rong, Dong & Yu's
+    voidage function (slip_homogeneous with chi_rong), by default on the
+    Clift-Gauvin sphere of wallCorrectedDrag's law continuous"""
+    return slip_homogeneous(d, rho_p, eps, cdre, chi_rong, rho, nu, g)
 
 
 def n_richardson_zaki(Re_t, a):
@@ -128,6 +161,12 @@ WEN_YU_FORCES = """        WenYuDrag { alphac alphac; }
 # the riser's own forces in a suspension: wallCorrectedDrag with the Wen &
 # Yu voidage function (model B, with riserFluidStress's rho_f V Du/Dt)
 RISER_WEN_YU_FORCES = """        wallCorrectedDrag { law continuous; voidage wenYu; }
+        riserFluidStress;
+        riserFrame;
+        gravity;"""
+
+# the same with the voidage function of Rong, Dong & Yu (2013)
+RISER_RONG_FORCES = """        wallCorrectedDrag { law continuous; voidage rong; }
         riserFluidStress;
         riserFrame;
         gravity;"""
@@ -242,15 +281,18 @@ def hindered_case(case, cv, end, forces=WEN_YU_FORCES, scene="1mm"):
 
 # the single sphere's drag of each drag law of the scenes
 SINGLE_SPHERE = {"WenYuDrag": wen_yu_cdre, "wallCorrectedDrag": clift_gauvin_cdre,
-                 "wallCorrectedDrag_wenYu": clift_gauvin_cdre}
+                 "wallCorrectedDrag_wenYu": clift_gauvin_cdre,
+                 "wallCorrectedDrag_rong": clift_gauvin_cdre}
 
 
 def hindered_reference(cv, scene="1mm", drag="WenYuDrag"):
     """the closed forms at the achieved solids fraction cv of the scene:
-    {ut, Re_t, a (d/D), richardsonZaki, garsideAlDibouni, wenYu} (the last
-    three as u_s / u_t; wenYu the Wen & Yu balance of a homogeneous
-    suspension), u_t the terminal velocity in unbounded water by the single
-    sphere's drag of the drag law drag (a key of SINGLE_SPHERE)"""
+    {ut, Re_t, a (d/D), richardsonZaki, garsideAlDibouni, wenYu, rong} (the
+    last four as u_s / u_t; wenYu and rong the balances of a homogeneous
+    suspension with Wen & Yu's and with Rong, Dong & Yu's voidage
+    function), u_t the terminal velocity in unbounded water by the single
+    sphere's drag of the drag law drag (a key of SINGLE_SPHERE), which the
+    balances use too"""
     d = SCENES[scene]["d"]
     a = d / SCENES[scene]["D"]
     ut = terminal_velocity(d, ORE_DENSITY, SINGLE_SPHERE[drag])
@@ -258,7 +300,8 @@ def hindered_reference(cv, scene="1mm", drag="WenYuDrag"):
     eps = 1 - cv
     return {"ut": ut, "Re_t": Re_t, "a": a, "richardsonZaki": richardson_zaki(eps, Re_t, a),
             "garsideAlDibouni": garside_al_dibouni(eps, Re_t),
-            "wenYu": slip_wen_yu(d, ORE_DENSITY, eps, SINGLE_SPHERE[drag]) / ut}
+            "wenYu": slip_wen_yu(d, ORE_DENSITY, eps, SINGLE_SPHERE[drag]) / ut,
+            "rong": slip_rong(d, ORE_DENSITY, eps, SINGLE_SPHERE[drag]) / ut}
 
 
 # ------------------------------------------------- the kernel's mesh scene

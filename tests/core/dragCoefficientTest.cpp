@@ -123,13 +123,15 @@ TEST(DragCoefficient, RejectsBadArguments)
 // the single sphere's; in the Stokes regime (c independent of Re) a
 // homogeneous suspension settles where c eps^-chi w = c u_t, so
 // w/u_t = eps^chi: Richardson & Zaki's slip exponent n - 1 = chi, 3.65 for
-// Wen & Yu and 3.7 for Di Felice (n = 4.65, 4.7). Di Felice's chi is
-// 3.7 - 0.65 = 3.05 where log10 Re_s = 1.5, and tends to 3.7 both ways.
+// Wen & Yu and 3.7 for Di Felice (n = 4.65, 4.7), 2.65 (eps + 1) for Rong,
+// Dong & Yu. Di Felice's chi is 3.7 - 0.65 = 3.05 where log10 Re_s = 1.5,
+// and tends to 3.7 both ways.
 TEST(DragCoefficient, VoidageFunctions)
 {
     const riser::WallFactors w(0.05);
     const double d = 1e-3, mu = 1e-3;
-    for (const auto v : {riser::Voidage::none, riser::Voidage::wenYu, riser::Voidage::diFelice})
+    for (const auto v : {riser::Voidage::none, riser::Voidage::wenYu, riser::Voidage::diFelice,
+                         riser::Voidage::rong})
     {
         for (const double Re : {0.0, 0.5, 30.0, 3000.0})
         {
@@ -149,14 +151,55 @@ TEST(DragCoefficient, VoidageFunctions)
     EXPECT_NEAR(riser::suspensionDragFactor(riser::DragLaw::continuous, w, d, mu, tiny,
                                             riser::Voidage::diFelice, eps)/single,
                 std::pow(0.7, -3.7), 1e-5);
+    EXPECT_NEAR(riser::suspensionDragFactor(riser::DragLaw::continuous, w, d, mu, tiny,
+                                            riser::Voidage::rong, eps)/single,
+                std::pow(0.7, -2.65*1.7), 1e-5);
 
     // Di Felice's dip: Re_s = 10^1.5
     const double ReS = std::pow(10.0, 1.5);
-    EXPECT_NEAR(riser::voidageExponent(riser::Voidage::diFelice, ReS), 3.05, 1e-14);
+    EXPECT_NEAR(riser::voidageExponent(riser::Voidage::diFelice, eps, ReS), 3.05, 1e-14);
     EXPECT_NEAR(riser::suspensionDragFactor(riser::DragLaw::paper, w, d, mu, ReS/eps,
                                             riser::Voidage::diFelice, eps),
                 riser::dragFactor(riser::DragLaw::paper, w, d, mu, ReS)*std::pow(eps, -3.05),
                 1e-12*riser::dragFactor(riser::DragLaw::paper, w, d, mu, ReS));
-    EXPECT_NEAR(riser::voidageExponent(riser::Voidage::diFelice, 1e6), 3.7, 1e-3);
-    EXPECT_EQ(riser::voidageExponent(riser::Voidage::diFelice, 0.0), 3.7);
+    EXPECT_NEAR(riser::voidageExponent(riser::Voidage::diFelice, eps, 1e6), 3.7, 1e-3);
+    EXPECT_EQ(riser::voidageExponent(riser::Voidage::diFelice, eps, 0.0), 3.7);
+    // Wen & Yu's chi does not depend on eps or Re_s
+    EXPECT_EQ(riser::voidageExponent(riser::Voidage::wenYu, 0.5, 1e3), 3.65);
+}
+
+// Rong, Dong & Yu's (2013) chi = 2.65 (eps + 1) - (5.3 - 3.5 eps) eps^2
+// exp(-(1.5 - log10 Re_s)^2/2) against values worked out by hand. The
+// tolerance, 1e-13, is round-off: log10 of 10^1.5 or 10^3.5 is 1.5 or 3.5
+// to a few ulps, and the rest is a handful of products of numbers of order 5.
+TEST(DragCoefficient, RongVoidageExponent)
+{
+    using riser::Voidage;
+    using riser::voidageExponent;
+    // at the dip, log10 Re_s = 1.5 (exp = 1): 2.65 * 1.8 - 2.5 * 0.64 = 4.77 - 1.6
+    EXPECT_NEAR(voidageExponent(Voidage::rong, 0.8, std::pow(10.0, 1.5)), 3.17, 1e-13);
+    // eps = 1 at the dip: 5.3 - 1.8
+    EXPECT_NEAR(voidageExponent(Voidage::rong, 1.0, std::pow(10.0, 1.5)), 3.5, 1e-13);
+    // high Re_s, log10 Re_s = 3.5 (exp(-2)): 2.65 * 1.7 - 2.85 * 0.49 exp(-2)
+    //   = 4.505 - 1.3965 * 0.135335283 = 4.316004
+    EXPECT_NEAR(voidageExponent(Voidage::rong, 0.7, std::pow(10.0, 3.5)),
+                4.505 - 1.3965*std::exp(-2.0), 1e-13);
+    EXPECT_NEAR(voidageExponent(Voidage::rong, 0.7, std::pow(10.0, 3.5)), 4.316004, 1e-6);
+    // low Re_s, log10 Re_s = -0.5 (exp(-2) again): 2.65 * 1.9 - 2.15 * 0.81 exp(-2)
+    EXPECT_NEAR(voidageExponent(Voidage::rong, 0.9, std::pow(10.0, -0.5)),
+                5.035 - 1.7415*std::exp(-2.0), 1e-13);
+    // Stokes limit Re_s = 0: the dip vanishes, 2.65 (eps + 1)
+    EXPECT_NEAR(voidageExponent(Voidage::rong, 0.6, 0.0), 4.24, 1e-13);
+    // far beyond the dip chi tends to the same 2.65 (eps + 1): at Re_s = 1e12
+    // the dip is 1.152 exp(-55.1) ~ 1e-24
+    EXPECT_NEAR(voidageExponent(Voidage::rong, 0.6, 1e12), 4.24, 1e-13);
+
+    // the drag factor uses chi at eps and Re_s = eps Re
+    const riser::WallFactors w(0.1);
+    const double d = 1e-2, mu = 1e-3, eps = 0.8, Re = 5000.0;
+    EXPECT_NEAR(riser::suspensionDragFactor(riser::DragLaw::continuous, w, d, mu, Re,
+                                            Voidage::rong, eps),
+                riser::dragFactor(riser::DragLaw::continuous, w, d, mu, eps*Re)
+                    *std::pow(eps, -voidageExponent(Voidage::rong, eps, eps*Re)),
+                1e-12*riser::dragFactor(riser::DragLaw::continuous, w, d, mu, eps*Re));
 }

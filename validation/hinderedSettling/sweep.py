@@ -17,7 +17,7 @@ contacts gave the same slip to 4 digits); core cells of h = d; dt = 1 ms.
   450 ores; 0.9 s, measured over (0.3, 0.9] s.
 The ores reach their hindered speed well before the window opens.
 
-Three drags:
+Four drags:
 - WenYuDrag (stock, Wen & Yu 1966): the single sphere's drag
   (Schiller-Naumann, Newton above Re = 1000) at the superficial slip,
   times eps^-4.65 per ore; it holds the pressure gradient's share (the
@@ -26,7 +26,16 @@ Three drags:
   factors, no voidage function) with riserFluidStress;
 - wallCorrectedDrag_wenYu: the same with `voidage wenYu` (the Wen & Yu
   voidage function in model B's form, c(eps Re) eps^-3.65) and
-  riserFluidStress: the riser's own forces in a suspension.
+  riserFluidStress: the riser's own forces in a suspension;
+- wallCorrectedDrag_rong: the same with `voidage rong`, the voidage
+  function of Rong, Dong & Yu (2013), chi = 2.65 (eps + 1) - (5.3 -
+  3.5 eps) eps^2 exp(-(1.5 - log10 Re_s)^2/2), Re_s = eps Re. At the
+  balance of a homogeneous suspension chi = 5.01, 4.86, 4.55, 4.25 for
+  the 10 mm ore (Re_s = 5000 to 2200, far above the dip at 10^1.5) and
+  3.58, 3.44, 3.23, 3.12 for the 1 mm ore (Re_s = 96 to 42, near it),
+  against Wen & Yu's 3.65 for both. Its fit (lattice-Boltzmann flow
+  through packings of spheres) does not reach the 10 mm ore's
+  Re_s ~ 4000: there it is an extrapolation.
 
 Measured (riserfoam.suspension.measure): over the window, the ores' mean
 axial velocity w against the carrier's interstitial mean u_b/(1 - C_v)
@@ -51,7 +60,8 @@ width at least 5 % of the band's midpoint (riserfoam.suspension.band_excess;
 the floor is not reached in these scenes). Also drawn: the Wen & Yu
 balance for a homogeneous suspension (riserfoam.suspension.slip_wen_yu),
 the closed form the WenYuDrag runs follow while the suspension stays
-homogeneous.
+homogeneous, and Rong, Dong & Yu's (riserfoam.suspension.slip_rong, on
+the Clift-Gauvin sphere, without the wall factors).
 
 Measured (results/hinderedSettling.md): WenYuDrag, 1 mm: u_s/u_t = 0.907,
 0.814, 0.636, 0.476, excess 0.058, 0.053, 0, 0 (met); 10 mm: 0.936,
@@ -68,9 +78,26 @@ weight. wallCorrectedDrag_wenYu (the voidage function): 1 mm: 0.892,
 0.857, 0.732, 0.601, excess 0.03, 0.18, 0.58, 1.20 (met at C_v = 0.05
 only: the same Wen & Yu exponent; the pipe wall's factors lower the slip
 by 1.8 to 1.9 % against the balance without them).
+wallCorrectedDrag_rong (Rong, Dong & Yu's voidage function): 10 mm:
+0.885, 0.803, 0.661, 0.538, excess 0, 0, 0, 0.087 (met at every C_v: in
+Newton's regime the balance gives n = (chi + 1)/2 = 3.0 to 2.6, about
+Garside & Al-Dibouni's 2.71, where Wen & Yu's 3.65 gives 2.325); 1 mm:
+0.894, 0.812, 0.663, 0.530, excess 0, 0.02, 0.29, 0.54 (met at C_v = 0.05
+and 0.1, missed from 0.2: near Re_s = 10^1.5 its chi, 3.1 to 3.6, is
+below Wen & Yu's and falls with C_v). The runs lie 1.5 to 2.2 % (10 mm)
+and 0.9 to 1.2 % (1 mm) below the balance without the wall factors.
+Which closure for which ore: wenYu for the 1 mm ore, rong for the
+riser's 10 mm ore (an extrapolation of its fit there); neither serves
+both.
 
-usage: sweep.py [-cv 0.05 0.1 0.2 0.3] [-scenes 1mm 10mm] [-j 2] [-scratch DIR]
-                [-reuse (no runs: rebuild the results from the cases)]
+usage: sweep.py [-cv 0.05 0.1 0.2 0.3] [-scenes 1mm 10mm] [-drags DRAG ...] [-j 2]
+                [-scratch DIR] [-reuse (no runs: rebuild the results from the cases)]
+                [-merge (keep the rows of results/hinderedSettling.json that
+                         this run does not redo, matched by scene, drag and
+                         requested C_v; their history is not stored, so
+                         the figure's history panels show this run's only)]
+The drags (-drags): WenYuDrag, wallCorrectedDrag, wallCorrectedDrag_wenYu,
+wallCorrectedDrag_rong; all by default.
 
 Writes results/hinderedSettling.md and .json and
 ../figures/hinderedSettling.png.
@@ -90,9 +117,17 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.abspath(os.path.join(HERE, "../.."))
 CV_LIST = (0.05, 0.1, 0.2, 0.3)
 DRAGS = {"WenYuDrag": sus.WEN_YU_FORCES, "wallCorrectedDrag": cases.COUPLED_FORCES,
-         "wallCorrectedDrag_wenYu": sus.RISER_WEN_YU_FORCES}
-# the drags whose homogeneous balance is Wen & Yu's
-WEN_YU_DRAGS = ("WenYuDrag", "wallCorrectedDrag_wenYu")
+         "wallCorrectedDrag_wenYu": sus.RISER_WEN_YU_FORCES,
+         "wallCorrectedDrag_rong": sus.RISER_RONG_FORCES}
+# the homogeneous balance of each drag with a voidage function: the key of
+# its column in the results (riserfoam.suspension.hindered_reference's
+# wenYu or rong + "Homogeneous")
+HOMOGENEOUS = {"WenYuDrag": "wenYuHomogeneous", "wallCorrectedDrag_wenYu": "wenYuHomogeneous",
+               "wallCorrectedDrag_rong": "rongHomogeneous"}
+# the figure's marker and history line of each drag
+STYLES = {"WenYuDrag": ("C3o", "-"), "wallCorrectedDrag": ("C2s", "--"),
+          "wallCorrectedDrag_wenYu": ("C4^", ":"), "wallCorrectedDrag_rong": ("C9D", "-.")}
+RESULTS = os.path.join(HERE, "results")
 
 
 def reference(scene):
@@ -128,18 +163,43 @@ def evaluate(scratch, scene, drag, cv):
             "ut": ref["ut"], "Re_t": ref["Re_t"],
             "slip": m["slip"], "slipRatio": ratio, "richardsonZaki": rz,
             "garsideAlDibouni": gad, "wenYuHomogeneous": ref["wenYu"],
+            "rongHomogeneous": ref["rong"],
             "excess": excess, "bandWidth": width, "floored": floored,
             "dpdzRatio": m["dpdzRatio"], "uzRms": m["uzRms"], "cpu": cpu(case),
             "history": m["history"]}
 
 
+def key(row):
+    """what identifies a row: scene, drag and requested C_v"""
+    return (row["scene"], row["drag"], row["cvRequested"])
+
+
+def merged(rows, path):
+    """rows and those of the results file path (a former run) that rows do
+    not replace (same key), ordered by scene, drag and C_v; the closed-form
+    columns a former run may lack are computed"""
+    new = {key(r) for r in rows}
+    old = []
+    if os.path.exists(path):
+        with open(path) as f:
+            old = [r for r in json.load(f) if key(r) not in new]
+    for r in old:
+        ref = sus.hindered_reference(r["cv"], r["scene"], r["drag"])
+        r.setdefault("wenYuHomogeneous", ref["wenYu"])
+        r.setdefault("rongHomogeneous", ref["rong"])
+    scenes, drags = list(sus.SCENES), list(DRAGS)
+    return sorted(rows + old, key=lambda r: (scenes.index(r["scene"]), drags.index(r["drag"]),
+                                             r["cvRequested"]))
+
+
 def table(rows):
     lines = ["| ore | drag | u_t [m/s] | C_v | ores | u_s [m/s] | u_s/u_t | R&Z | G&A-D "
-             "| Wen-Yu homogeneous | excess over band width | -dp/dz / (C_v (rho_p - rho_f) g) "
+             "| own voidage function, homogeneous | excess over band width "
+             "| -dp/dz / (C_v (rho_p - rho_f) g) "
              "| carrier u_z RMS at the end [mm/s] | CPU [s] |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        own = "%.4f" % r["wenYuHomogeneous"] if r["drag"] in WEN_YU_DRAGS else "-"
+        own = "%.4f" % r[HOMOGENEOUS[r["drag"]]] if r["drag"] in HOMOGENEOUS else "-"
         lines.append("| %s | %s | %.4f | %.4f | %d | %.5f | %.4f | %.4f | %.4f | %s | %.3f%s "
                      "| %.4f | %.1f | %.0f |"
                      % (r["scene"], r["drag"], r["ut"], r["cv"], r["ores"], r["slip"],
@@ -149,11 +209,17 @@ def table(rows):
     return "\n".join(lines)
 
 
+def color(cv):
+    """the colour of the requested C_v in the figure's history panels"""
+    return "C%d" % CV_LIST.index(cv) if cv in CV_LIST else "k"
+
+
 def plot(rows, figure):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     import numpy as np
+    from matplotlib.lines import Line2D
     fig, axes = plt.subplots(2, 2, figsize=(12, 9))
     cv = np.linspace(0.0, 0.35, 200)
     for (ax, bx), scene in zip(axes, sus.SCENES):
@@ -162,7 +228,10 @@ def plot(rows, figure):
         gad = np.array([sus.garside_al_dibouni(1 - c, Re_t) for c in cv])
         lo, hi = np.minimum(rz, gad), np.maximum(rz, gad)
         width = np.maximum(hi - lo, sus.BAND_FLOOR * 0.5 * (lo + hi))
-        wy = [sus.slip_wen_yu(sus.SCENES[scene]["d"], sus.ORE_DENSITY, 1 - c) / ut for c in cv]
+        d = sus.SCENES[scene]["d"]
+        wy = [sus.slip_wen_yu(d, sus.ORE_DENSITY, 1 - c) / ut for c in cv]
+        ut_cg = sus.terminal_velocity(d, sus.ORE_DENSITY, sus.clift_gauvin_cdre)
+        rong = [sus.slip_rong(d, sus.ORE_DENSITY, 1 - c) / ut_cg for c in cv]
         ax.fill_between(cv, lo - 0.15 * width, hi + 0.15 * width, color="0.88",
                         label="band + 15 % of its width")
         ax.plot(cv, rz, "C0-", label="Richardson & Zaki (n = %.3f, u_i = %.3f u_t)"
@@ -170,9 +239,10 @@ def plot(rows, figure):
         ax.plot(cv, gad, "C1-", label="Garside & Al-Dibouni (n = %.3f)"
                 % sus.n_garside_al_dibouni(Re_t))
         ax.plot(cv, wy, "k:", label="Wen & Yu balance, homogeneous")
+        ax.plot(cv, rong, "k-.", lw=1,
+                label="Rong, Dong & Yu balance, homogeneous (Clift-Gauvin sphere)")
         mine = [r for r in rows if r["scene"] == scene]
-        for drag, style in (("WenYuDrag", "C3o"), ("wallCorrectedDrag", "C2s"),
-                            ("wallCorrectedDrag_wenYu", "C4^")):
+        for drag, (style, _) in STYLES.items():
             pts = [(r["cv"], r["slipRatio"]) for r in mine if r["drag"] == drag]
             if pts:
                 ax.plot(*zip(*pts), style, ms=7, label="riserCoupledFoam, %s" % drag)
@@ -180,19 +250,27 @@ def plot(rows, figure):
         ax.set_ylabel("u_s / u_t")
         ax.set_title("slip, ores of d = %g mm (u_t = %.3f m/s, Re_t = %.0f, d/D = %.2f)"
                      % (1e3 * sus.SCENES[scene]["d"], ut, Re_t, a), fontsize=10)
-        ax.legend(fontsize=7)
+        ax.set_ylim(0.1, 1.05)  # room for the legend below the curves
+        ax.legend(fontsize=7, loc="lower left")
         ax.grid(alpha=0.3)
         for r in mine:
+            if "history" not in r:  # a row of a former run, merged
+                continue
             t, w = zip(*r["history"])
-            bx.plot(t, -np.array(w) / r["ut"], "-" if r["drag"] == "WenYuDrag" else "--",
-                    color="C%d" % CV_LIST.index(r["cvRequested"]) if r["cvRequested"] in CV_LIST
-                    else "k", lw=1, label="%s, C_v = %.2f" % (r["drag"], r["cvRequested"]))
+            bx.plot(t, -np.array(w) / r["ut"], STYLES[r["drag"]][1], color=color(r["cvRequested"]),
+                    lw=1)
+        # the legend: a colour per C_v, a line style per drag
+        drawn = [r for r in mine if "history" in r]
+        handles = [Line2D([], [], color=color(c), lw=1, label="C_v = %.2f" % c)
+                   for c in sorted({r["cvRequested"] for r in drawn})]
+        handles += [Line2D([], [], color="k", ls=STYLES[drag][1], lw=1, label=drag)
+                    for drag in STYLES if any(r["drag"] == drag for r in drawn)]
         bx.axvspan(sus.SCENES[scene]["t0"], sus.SCENES[scene]["end"], color="0.92")
         bx.set_xlabel("t [s]")
         bx.set_ylabel("-w / u_t (ores' mean axial velocity)")
         bx.set_title("d = %g mm: approach and averaging window (grey)"
                      % (1e3 * sus.SCENES[scene]["d"]), fontsize=10)
-        bx.legend(fontsize=7, ncol=2)
+        bx.legend(handles=handles, fontsize=7, ncol=2, loc="lower right")
         bx.grid(alpha=0.3)
     fig.tight_layout()
     fig.savefig(figure, dpi=100)
@@ -204,29 +282,32 @@ def main():
     ap.add_argument("-scenes", nargs="+", default=list(sus.SCENES), choices=list(sus.SCENES))
     ap.add_argument("-j", type=int, default=2)
     ap.add_argument("-scratch", default=os.path.join(ROOT, "build/validation/hinderedSettling"))
+    ap.add_argument("-drags", nargs="+", default=list(DRAGS), choices=list(DRAGS))
     ap.add_argument("-reuse", action="store_true")
+    ap.add_argument("-merge", action="store_true")
     args = ap.parse_args()
     os.makedirs(args.scratch, exist_ok=True)
-    jobs = [(scene, drag, cv) for scene in args.scenes for drag in DRAGS for cv in args.cv]
+    jobs = [(scene, drag, cv) for scene in args.scenes for drag in args.drags for cv in args.cv]
     if not args.reuse:
         with ThreadPoolExecutor(max_workers=args.j) as pool:
             list(pool.map(lambda job: run(args.scratch, *job), jobs))
     rows = [evaluate(args.scratch, *job) for job in jobs]
+    if args.merge:
+        rows = merged(rows, os.path.join(RESULTS, "hinderedSettling.json"))
     text = table(rows)
     print(text)
     lines = []
-    for scene in args.scenes:
+    for scene in sorted({r["scene"] for r in rows}, key=list(sus.SCENES).index):
         ut, Re_t, a = reference(scene)
         lines.append("- %s: u_t = %.5f m/s, Re_t = %.2f, d/D = %.3f; n: Richardson & Zaki %.4f, "
                      "Garside & Al-Dibouni %.4f; window (%g, %g] s"
                      % (scene, ut, Re_t, a, sus.n_richardson_zaki(Re_t, a),
                         sus.n_garside_al_dibouni(Re_t), sus.SCENES[scene]["t0"],
                         sus.SCENES[scene]["end"]))
-    results = os.path.join(HERE, "results")
-    os.makedirs(results, exist_ok=True)
-    with open(os.path.join(results, "hinderedSettling.md"), "w") as out:
+    os.makedirs(RESULTS, exist_ok=True)
+    with open(os.path.join(RESULTS, "hinderedSettling.md"), "w") as out:
         out.write("%s\n\n%s\n" % ("\n".join(lines), text))
-    with open(os.path.join(results, "hinderedSettling.json"), "w") as out:
+    with open(os.path.join(RESULTS, "hinderedSettling.json"), "w") as out:
         json.dump([{k: v for k, v in r.items() if k != "history"} for r in rows], out, indent=1)
     plot(rows, os.path.join(ROOT, "validation/figures/hinderedSettling.png"))
 
