@@ -11,6 +11,7 @@
 #include "zeroGradientFvPatchFields.H"
 #include "IStringStream.H"
 #include "PstreamCombineReduceOps.H"
+#include "riserFoamVersion.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -103,7 +104,7 @@ class lockstepPCG
     //- One field's values and its interface contribution (the coupled
     //  patches' updates take one scalar field at a time), set at the
     //  coupling cells
-    scalarField one_, oneResult_;
+    solveScalarField one_, oneResult_;
 
     //- y = A v (interleaved), the coupled patches included
     void multiply(scalarField& y, const scalarField& v)
@@ -145,14 +146,7 @@ class lockstepPCG
                 one_[i] = vp[K*i + k];
                 oneResult_[i] = 0;
             }
-            A_.initMatrixInterfaces
-            (
-                true, bouCoeffs_, interfaces_, one_, oneResult_, 0
-            );
-            A_.updateMatrixInterfaces
-            (
-                true, bouCoeffs_, interfaces_, one_, oneResult_, 0
-            );
+            addCoupledProduct(A_, bouCoeffs_, interfaces_, one_, oneResult_);
             for (const label i : couplingCells_)
             {
                 yp[K*i + k] += oneResult_[i];
