@@ -158,18 +158,20 @@ WEN_YU_FORCES = """        WenYuDrag { alphac alphac; }
         riserFrame;
         gravity;"""
 
-# the riser's own forces in a suspension: wallCorrectedDrag with the Wen &
-# Yu voidage function (model B, with riserFluidStress's rho_f V Du/Dt)
-RISER_WEN_YU_FORCES = """        wallCorrectedDrag { law continuous; voidage wenYu; }
-        riserFluidStress;
-        riserFrame;
-        gravity;"""
 
-# the same with the voidage function of Rong, Dong & Yu (2013)
-RISER_RONG_FORCES = """        wallCorrectedDrag { law continuous; voidage rong; }
+def riser_forces(voidage):
+    """the riser's own forces in a suspension: wallCorrectedDrag with the
+    voidage function voidage (model B, with riserFluidStress's
+    rho_f V Du/Dt)"""
+    return """        wallCorrectedDrag { law continuous; voidage %s; }
         riserFluidStress;
         riserFrame;
-        gravity;"""
+        gravity;""" % voidage
+
+
+# with the voidage functions of Wen & Yu (1966) and Rong, Dong & Yu (2013)
+RISER_WEN_YU_FORCES = riser_forces("wenYu")
+RISER_RONG_FORCES = riser_forces("rong")
 
 CONTACTS = """    collisionModel riserWallContact;
     riserWallContactCoeffs

@@ -242,7 +242,7 @@ int main(int argc, char *argv[])
     const scalar thetaBefore = gSum(theta.field()*mesh.V().field());
     const vector amountBefore = gSum(amount.field());
     kernel.spreadDensity(theta, d);
-    kernel.spreadAmount(amount, d);
+    kernel.spreadAmount(d, amount);
     const scalar thetaAfter = gSum(theta.field()*mesh.V().field());
     const vector amountAfter = gSum(amount.field());
 

@@ -194,15 +194,17 @@ class lockstepPCG
         }
     }
 
-    //- Per field, the sum over the cells of u v (all processors)
-    FixedList<scalar, K> dot(const scalarField& u, const scalarField& v) const
+    //- Per field k, the sum over the cells and processors of
+    //  term(K*cell + k)
+    template<class Term>
+    static FixedList<scalar, K> sumPerField(const label n, const Term& term)
     {
         scalarField sums(K, Zero);
-        for (label i = 0; i < n_; ++i)
+        for (label i = 0; i < n; ++i)
         {
             for (label k = 0; k < K; ++k)
             {
-                sums[k] += u[K*i + k]*v[K*i + k];
+                sums[k] += term(K*i + k);
             }
         }
         combineSums(sums);
@@ -214,24 +216,16 @@ class lockstepPCG
         return out;
     }
 
+    //- Per field, the sum over the cells of u v (all processors)
+    FixedList<scalar, K> dot(const scalarField& u, const scalarField& v) const
+    {
+        return sumPerField(n_, [&](const label j) { return u[j]*v[j]; });
+    }
+
     //- Per field, the 1-norm of the residual (all processors)
     FixedList<scalar, K> residualNorm() const
     {
-        scalarField sums(K, Zero);
-        for (label i = 0; i < n_; ++i)
-        {
-            for (label k = 0; k < K; ++k)
-            {
-                sums[k] += mag(r_[K*i + k]);
-            }
-        }
-        combineSums(sums);
-        FixedList<scalar, K> out;
-        for (label k = 0; k < K; ++k)
-        {
-            out[k] = sums[k];
-        }
-        return out;
+        return sumPerField(n_, [this](const label j) { return mag(r_[j]); });
     }
 
 public:

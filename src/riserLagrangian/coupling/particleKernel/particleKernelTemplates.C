@@ -9,23 +9,34 @@
 
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
-template<class Type>
-void Foam::particleKernel::spreadField
+template<class... Types>
+void Foam::particleKernel::spreadFields
 (
-    Field<Type>& density,
-    const scalar b
+    const scalar b,
+    Field<Types>&... densities
 ) const
 {
-    List<scalarField> components(pTraits<Type>::nComponents);
-    forAll(components, cmpt)
+    List<scalarField> components;
+    const auto append = [&components](const auto& density)
     {
-        components[cmpt] = density.component(cmpt);
-    }
+        using Type = typename std::decay_t<decltype(density)>::value_type;
+        for (direction cmpt = 0; cmpt < pTraits<Type>::nComponents; ++cmpt)
+        {
+            components.append(scalarField(density.component(cmpt)));
+        }
+    };
+    (append(densities), ...);
     diffuse(components, b);
-    forAll(components, cmpt)
+    label next = 0;
+    const auto take = [&components, &next](auto& density)
     {
-        density.replace(cmpt, components[cmpt]);
-    }
+        using Type = typename std::decay_t<decltype(density)>::value_type;
+        for (direction cmpt = 0; cmpt < pTraits<Type>::nComponents; ++cmpt)
+        {
+            density.replace(cmpt, components[next++]);
+        }
+    };
+    (take(densities), ...);
 }
 
 
@@ -40,24 +51,24 @@ void Foam::particleKernel::spreadDensity
 {
     if (spreads(dMax))
     {
-        spreadField(density.field(), bandwidth(dMax));
+        spreadFields(bandwidth(dMax), density.field());
     }
 }
 
 
-template<class Type>
+template<class... Types>
 void Foam::particleKernel::spreadAmount
 (
-    DimensionedField<Type, volMesh>& amount,
-    const scalar dMax
+    const scalar dMax,
+    DimensionedField<Types, volMesh>&... amounts
 ) const
 {
     if (spreads(dMax))
     {
-        Field<Type>& f = amount.field();
-        f /= mesh_.V().field();
-        spreadField(f, bandwidth(dMax));
-        f *= mesh_.V().field();
+        const scalarField& V = mesh_.V().field();
+        ((amounts.field() /= V), ...);
+        spreadFields(bandwidth(dMax), amounts.field()...);
+        ((amounts.field() *= V), ...);
     }
 }
 
@@ -108,23 +119,8 @@ Foam::tmp<Foam::fvVectorMatrix> Foam::particleKernel::SU
     }
     volVectorField::Internal uTrans("particleKernel:UTrans", cloud.UTrans());
     volScalarField::Internal uCoeff("particleKernel:UCoeff", cloud.UCoeff());
-    if (spreads(dMax))
-    {
-        // the four fields in one pass of the kernel's solves, as densities
-        const scalarField& V = mesh_.V().field();
-        List<scalarField> densities(vector::nComponents + 1);
-        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
-        {
-            densities[cmpt] = uTrans.field().component(cmpt)/V;
-        }
-        densities[vector::nComponents] = uCoeff.field()/V;
-        diffuse(densities, bandwidth(dMax));
-        for (direction cmpt = 0; cmpt < vector::nComponents; ++cmpt)
-        {
-            uTrans.field().replace(cmpt, densities[cmpt]*V);
-        }
-        uCoeff.field() = densities[vector::nComponents]*V;
-    }
+    // spread together: one pass of the kernel's solves for the four fields
+    spreadAmount(dMax, uTrans, uCoeff);
 
     // per unit volume and time; the implicit part on the new U, its
     // explicit counterpart on the current U: at convergence the source is
