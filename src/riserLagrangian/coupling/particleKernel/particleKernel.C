@@ -13,6 +13,8 @@
 #include "PstreamCombineReduceOps.H"
 #include "riserFoamVersion.H"
 
+#include <Eigen/Core>
+
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
 namespace Foam
@@ -79,12 +81,33 @@ scalarField dicReciprocal(const lduMatrix& A)
 }
 
 
+//- One cell's entries of K interleaved fields, as a small fixed-size
+//  array: its arithmetic is one SIMD instruction for two fields where the
+//  compiler's vector width allows
+template<label K>
+using Lanes = Eigen::Array<scalar, K, 1>;
+
+template<label K>
+inline Eigen::Map<Lanes<K>> lanes(scalar* p)
+{
+    return Eigen::Map<Lanes<K>>(p);
+}
+
+template<label K>
+inline Eigen::Map<const Lanes<K>> lanes(const scalar* p)
+{
+    return Eigen::Map<const Lanes<K>>(p);
+}
+
+
 //- Preconditioned conjugate gradients for K fields at once on one
 //  symmetric matrix A (the kernel's pseudo-step), the DIC preconditioner:
 //  the fields interleaved (entry K*cell + k), so that each face's
 //  addressing and coefficient are read once for the K fields and their
 //  values share cache lines; each field has its own step lengths and
-//  stops on its own residual
+//  stops on its own residual. Each iteration makes four passes over the
+//  cells and three over the faces (the product and the two sweeps of the
+//  preconditioner)
 template<label K>
 class lockstepPCG
 {
@@ -98,6 +121,11 @@ class lockstepPCG
     //  residual, direction, A times direction
     scalarField x_, r_, w_, p_, q_;
 
+    //- The preconditioner's face factors: rD of the face's upper cell
+    //  times its coefficient (the forward sweep), of its lower cell (the
+    //  backward sweep)
+    scalarField forward_, backward_;
+
     //- The cells next to the coupled patches (cyclic, processor)
     labelList couplingCells_;
 
@@ -106,37 +134,40 @@ class lockstepPCG
     //  coupling cells
     solveScalarField one_, oneResult_;
 
-    //- y = A v (interleaved), the coupled patches included
-    void multiply(scalarField& y, const scalarField& v)
+    //- Sum each field's entry of per-processor partial sums over the
+    //  processors
+    static Lanes<K> reduced(const Lanes<K>& sums)
     {
-        const scalar* const __restrict__ d = A_.diag().begin();
+        scalarField all(K);
+        for (label k = 0; k < K; ++k)
+        {
+            all[k] = sums(k);
+        }
+        combineSums(all);
+        Lanes<K> out;
+        for (label k = 0; k < K; ++k)
+        {
+            out(k) = all[k];
+        }
+        return out;
+    }
+
+    //- y += (the off-diagonal part of A, the coupled patches included) v,
+    //  interleaved
+    void addOffDiagonal(scalarField& y, const scalarField& v)
+    {
         const scalar* const __restrict__ a = A_.upper().begin();
         const label* const __restrict__ lower = A_.lduAddr().lowerAddr().begin();
         const label* const __restrict__ upper = A_.lduAddr().upperAddr().begin();
-        const scalar* const __restrict__ vp = v.begin();
-        scalar* const __restrict__ yp = y.begin();
-        for (label i = 0; i < n_; ++i)
-        {
-            for (label k = 0; k < K; ++k)
-            {
-                yp[K*i + k] = d[i]*vp[K*i + k];
-            }
-        }
+        const scalar* const vp = v.begin();
+        scalar* const yp = y.begin();
         const label nFaces = A_.upper().size();
         for (label f = 0; f < nFaces; ++f)
         {
-            const scalar* __restrict__ vl = vp + K*lower[f];
-            const scalar* __restrict__ vu = vp + K*upper[f];
-            scalar* __restrict__ yl = yp + K*lower[f];
-            scalar* __restrict__ yu = yp + K*upper[f];
-            for (label k = 0; k < K; ++k)
-            {
-                yu[k] += a[f]*vl[k];
-            }
-            for (label k = 0; k < K; ++k)
-            {
-                yl[k] += a[f]*vu[k];
-            }
+            const label l = K*lower[f];
+            const label u = K*upper[f];
+            lanes<K>(yp + u) += a[f]*lanes<K>(vp + l);
+            lanes<K>(yp + l) += a[f]*lanes<K>(vp + u);
         }
         // the coupled patches read and write their cells only
         for (label k = 0; k < K; ++k)
@@ -154,78 +185,36 @@ class lockstepPCG
         }
     }
 
-    //- w = M^-1 r (interleaved), M = (D + L) D^-1 (D + L^T) the DIC
-    //  factorisation (rD = 1/d): a forward and a backward sweep over the
-    //  faces
-    void precondition()
+    //- The sweeps of w = M^-1 r, M = (D + L) D^-1 (D + L^T) the DIC
+    //  factorisation (rD = 1/d), given w = rD r: forward and backward
+    //  over the faces
+    void sweep()
     {
         const label* const __restrict__ lower = A_.lduAddr().lowerAddr().begin();
         const label* const __restrict__ upper = A_.lduAddr().upperAddr().begin();
-        const scalar* const __restrict__ a = A_.upper().begin();
-        const scalar* const __restrict__ rd = rD_.begin();
+        const scalar* const __restrict__ fw = forward_.begin();
+        const scalar* const __restrict__ bw = backward_.begin();
         scalar* const w = w_.begin();
-        for (label i = 0; i < n_; ++i)
-        {
-            for (label k = 0; k < K; ++k)
-            {
-                w[K*i + k] = rd[i]*r_[K*i + k];
-            }
-        }
-        const label nFaces = A_.upper().size();
+        const label nFaces = forward_.size();
         for (label f = 0; f < nFaces; ++f)
         {
-            const scalar c = rd[upper[f]]*a[f];
-            const scalar* __restrict__ from = w + K*lower[f];
-            scalar* __restrict__ to = w + K*upper[f];
-            for (label k = 0; k < K; ++k)
-            {
-                to[k] -= c*from[k];
-            }
+            lanes<K>(w + K*upper[f]) -= fw[f]*lanes<K>(w + K*lower[f]);
         }
         for (label f = nFaces - 1; f >= 0; --f)
         {
-            const scalar c = rd[lower[f]]*a[f];
-            const scalar* __restrict__ from = w + K*upper[f];
-            scalar* __restrict__ to = w + K*lower[f];
-            for (label k = 0; k < K; ++k)
-            {
-                to[k] -= c*from[k];
-            }
+            lanes<K>(w + K*lower[f]) -= bw[f]*lanes<K>(w + K*upper[f]);
         }
     }
 
-    //- Per field k, the sum over the cells and processors of
-    //  term(K*cell + k)
-    template<class Term>
-    static FixedList<scalar, K> sumPerField(const label n, const Term& term)
+    //- Per field, the sum over the cells and processors of u v
+    Lanes<K> dot(const scalarField& u, const scalarField& v) const
     {
-        scalarField sums(K, Zero);
-        for (label i = 0; i < n; ++i)
+        Lanes<K> sums(Lanes<K>::Zero());
+        for (label i = 0; i < n_; ++i)
         {
-            for (label k = 0; k < K; ++k)
-            {
-                sums[k] += term(K*i + k);
-            }
+            sums += lanes<K>(u.begin() + K*i)*lanes<K>(v.begin() + K*i);
         }
-        combineSums(sums);
-        FixedList<scalar, K> out;
-        for (label k = 0; k < K; ++k)
-        {
-            out[k] = sums[k];
-        }
-        return out;
-    }
-
-    //- Per field, the sum over the cells of u v (all processors)
-    FixedList<scalar, K> dot(const scalarField& u, const scalarField& v) const
-    {
-        return sumPerField(n_, [&](const label j) { return u[j]*v[j]; });
-    }
-
-    //- Per field, the 1-norm of the residual (all processors)
-    FixedList<scalar, K> residualNorm() const
-    {
-        return sumPerField(n_, [this](const label j) { return mag(r_[j]); });
+        return reduced(sums);
     }
 
 public:
@@ -248,9 +237,18 @@ public:
         w_(K*n_),
         p_(K*n_),
         q_(K*n_),
+        forward_(A.upper().size()),
+        backward_(A.upper().size()),
         one_(n_, Zero),
         oneResult_(n_, Zero)
     {
+        const labelUList& lower = A_.lduAddr().lowerAddr();
+        const labelUList& upper = A_.lduAddr().upperAddr();
+        forAll(forward_, f)
+        {
+            forward_[f] = rD_[upper[f]]*A_.upper()[f];
+            backward_[f] = rD_[lower[f]]*A_.upper()[f];
+        }
         labelHashSet cells;
         forAll(interfaces_, patchi)
         {
@@ -273,80 +271,101 @@ public:
         const FixedList<scalar, K>& stop
     )
     {
+        const scalar* const __restrict__ d = A_.diag().begin();
+        const scalar* const __restrict__ rd = rD_.begin();
+        scalar* const __restrict__ x = x_.begin();
+        scalar* const __restrict__ r = r_.begin();
+        scalar* const __restrict__ w = w_.begin();
+        scalar* const __restrict__ p = p_.begin();
+        scalar* const __restrict__ q = q_.begin();
+
         for (label k = 0; k < K; ++k)
         {
             const scalarField& f = fields[first + k];
             for (label i = 0; i < n_; ++i)
             {
-                x_[K*i + k] = f[i];
+                x[K*i + k] = f[i];
             }
         }
-        multiply(q_, x_);
+        // r = V x0 - A x0, its 1-norm, and w = rD r ahead of the sweeps
         for (label i = 0; i < n_; ++i)
         {
-            for (label k = 0; k < K; ++k)
-            {
-                r_[K*i + k] = V[i]*x_[K*i + k] - q_[K*i + k];
-            }
+            lanes<K>(q + K*i) = d[i]*lanes<K>(x + K*i);
         }
+        addOffDiagonal(q_, x_);
+        Lanes<K> res(Lanes<K>::Zero());
+        for (label i = 0; i < n_; ++i)
+        {
+            lanes<K>(r + K*i) = V[i]*lanes<K>(x + K*i) - lanes<K>(q + K*i);
+            res += lanes<K>(r + K*i).abs();
+            lanes<K>(w + K*i) = rd[i]*lanes<K>(r + K*i);
+        }
+        res = reduced(res);
+
         FixedList<label, K> iterations(label(0));
         FixedList<bool, K> active;
-        FixedList<scalar, K> res = residualNorm();
-        FixedList<scalar, K> rho(scalar(0));
+        Lanes<K> rho(Lanes<K>::Zero());
         for (label k = 0; k < K; ++k)
         {
-            active[k] = res[k] > stop[k];
+            active[k] = res(k) > stop[k];
         }
         p_ = Zero;
         for (label iter = 0; active.found(true); ++iter)
         {
             if (iter == maxIterations)
             {
+                FixedList<scalar, K> reached;
+                for (label k = 0; k < K; ++k)
+                {
+                    reached[k] = res(k);
+                }
                 WarningInFunction
                     << "stopped after " << iter << " iterations at"
-                    << " residuals " << res << " (to reach " << stop
+                    << " residuals " << reached << " (to reach " << stop
                     << "): the sum of each spread field is restored"
                     << " afterwards" << endl;
                 break;
             }
-            precondition();
-            const FixedList<scalar, K> rw = dot(r_, w_);
-            FixedList<scalar, K> beta(scalar(0));
+            sweep();
+            const Lanes<K> rw = dot(r_, w_);
+            Lanes<K> beta(Lanes<K>::Zero());
             for (label k = 0; k < K; ++k)
             {
-                beta[k] = iter > 0 && active[k] ? rw[k]/rho[k] : 0;
-                rho[k] = rw[k];
+                beta(k) = iter > 0 && active[k] ? rw(k)/rho(k) : 0;
+                rho(k) = rw(k);
             }
+            // p = w + beta p, and q = A p: its diagonal part, then the rest
             for (label i = 0; i < n_; ++i)
             {
-                for (label k = 0; k < K; ++k)
-                {
-                    p_[K*i + k] = w_[K*i + k] + beta[k]*p_[K*i + k];
-                }
+                lanes<K>(p + K*i) =
+                    lanes<K>(w + K*i) + beta*lanes<K>(p + K*i);
+                lanes<K>(q + K*i) = d[i]*lanes<K>(p + K*i);
             }
-            multiply(q_, p_);
-            const FixedList<scalar, K> pq = dot(p_, q_);
-            FixedList<scalar, K> alpha(scalar(0));
+            addOffDiagonal(q_, p_);
+            const Lanes<K> pq = dot(p_, q_);
+            Lanes<K> alpha(Lanes<K>::Zero());
             for (label k = 0; k < K; ++k)
             {
-                if (active[k] && pq[k] > 0)
+                if (active[k] && pq(k) > 0)
                 {
-                    alpha[k] = rho[k]/pq[k];
+                    alpha(k) = rho(k)/pq(k);
                     ++iterations[k];
                 }
             }
+            // the update, the residual's 1-norm, and w = rD r for the next
+            // iteration's sweeps
+            res = Lanes<K>::Zero();
             for (label i = 0; i < n_; ++i)
             {
-                for (label k = 0; k < K; ++k)
-                {
-                    x_[K*i + k] += alpha[k]*p_[K*i + k];
-                    r_[K*i + k] -= alpha[k]*q_[K*i + k];
-                }
+                lanes<K>(x + K*i) += alpha*lanes<K>(p + K*i);
+                lanes<K>(r + K*i) -= alpha*lanes<K>(q + K*i);
+                res += lanes<K>(r + K*i).abs();
+                lanes<K>(w + K*i) = rd[i]*lanes<K>(r + K*i);
             }
-            res = residualNorm();
+            res = reduced(res);
             for (label k = 0; k < K; ++k)
             {
-                active[k] = active[k] && pq[k] > 0 && res[k] > stop[k];
+                active[k] = active[k] && pq(k) > 0 && res(k) > stop[k];
             }
         }
         for (label k = 0; k < K; ++k)
@@ -354,7 +373,7 @@ public:
             scalarField& f = fields[first + k];
             for (label i = 0; i < n_; ++i)
             {
-                f[i] = x_[K*i + k];
+                f[i] = x[K*i + k];
             }
         }
         return iterations;
