@@ -15,7 +15,7 @@ tutorial riser/oreTransport, stepsPerContact 10); dt = 5e-4 s; PIMPLE with
 first corrector), U, k, omega by symGaussSeidel to 1e-7 (relTol 0.1 in the
 first). The kernel is that of the tutorial riser/oreTransportCoupled:
 diffusion over 3 largest diameters (b = 30 mm) in 2 pseudo-steps, the
-solves to the default tolerance (1e-6), unless said.
+solves to the default tolerance (1e-4), unless said.
 
 Suite 'cost' (serial): the CPU time per step of seven variants of the
 scene, run alternately (A B ... G, then G ... B A, ...) in this one command,
@@ -32,10 +32,14 @@ so that the shared machine's load falls on all alike:
                 pseudo-steps (the same width, a shape nearer the
                 Gaussian, see particleKernel.H)
 
-Reported: the time per step of each (median and least over the repeats),
-the ratio twoWay / oneWay (the target: at most 1.3; the same for the
-pairs twoWayNone / oneWayNone and twoWayN4 / oneWayN4) computed repeat by
-repeat and its median and range, and the breakdown of the twoWay step:
+Reported: the time per step of each (median and least over the repeats);
+the ratio twoWay / oneWayNone, the coupled solver against the fluid solve
+plus the one-way cloud in one run (the ores' volume kept in their cells,
+no kernel, no reaction: the target, at most 1.3), computed repeat by
+repeat, its median and range; the ratios twoWay / oneWay (what the
+reaction and its spreading add to a run whose carrier already feels the
+spread volume), twoWayNone / oneWayNone and twoWayN4 / oneWayN4 alike; and
+the breakdown of the twoWay step:
 fluid; cloud = oneWayNone - fluid; the spread alpha_c = oneWay -
 oneWayNone; the reaction with one-cell deposits = twoWayNone -
 oneWayNone; the kernel's spreading of the reaction = (twoWay -
@@ -182,9 +186,10 @@ def suite_cost(args, work):
     med = statistics.median
     t = {k: med(r["cpuPerStep"] for r in runs[k]) for k in names}
     tmin = {k: min(r["cpuPerStep"] for r in runs[k]) for k in names}
-    ratios = [a["cpuPerStep"] / b["cpuPerStep"] for a, b in zip(runs["twoWay"], runs["oneWay"])]
     def paired(a, b):
         return [x["cpuPerStep"] / y["cpuPerStep"] for x, y in zip(runs[a], runs[b])]
+    ratios_target = paired("twoWay", "oneWayNone")
+    ratios = paired("twoWay", "oneWay")
     ratios_none = paired("twoWayNone", "oneWayNone")
     ratios_n4 = paired("twoWayN4", "oneWayN4")
     breakdown = {}
@@ -200,6 +205,8 @@ def suite_cost(args, work):
     return {"ores": runs["twoWay"][0]["parcels"], "iterations": iterations(paths["twoWay"]),
             "steps": steps, "measuredSteps": [3, steps - 1], "repeats": args.repeats,
             "runs": runs, "cpuPerStep": t, "cpuPerStepLeast": tmin,
+            "ratioTarget": med(ratios_target), "ratioTargetAllRepeats": ratios_target,
+            "ratioTargetOfLeast": tmin["twoWay"] / tmin["oneWayNone"],
             "ratioTwoWayOneWay": med(ratios), "ratioTwoWayOneWayAllRepeats": ratios,
             "ratioTwoWayOneWayOfLeast": tmin["twoWay"] / tmin["oneWay"],
             "ratioKernelNone": med(ratios_none), "ratioKernelNoneAllRepeats": ratios_none,
@@ -277,15 +284,21 @@ def write(args, result):
         for k in VARIANTS:
             lines.append("| %s | %s | %s | %s |" % (k, ms(t[k]), ms(tmin[k]), ", ".join(
                 ms(r["cpuPerStep"]) for r in cost["runs"][k])))
-        ok = cost["ratioTwoWayOneWay"] <= 1.3
-        lines.append("\n**twoWay / oneWay = %.2f** (median of the repeats' ratios; range %.2f to "
-                     "%.2f; of the least times %.2f): target <= 1.3 %s. With one-cell deposits "
-                     "(kernel none) twoWayNone / oneWayNone = %.2f (range %.2f to %.2f); with "
-                     "the kernel in the default 4 pseudo-steps twoWayN4 / oneWayN4 = %.2f (range %.2f to "
-                     "%.2f).\n"
+        ok = cost["ratioTarget"] <= 1.3
+        lines.append("\n**twoWay / oneWayNone = %.2f** (the coupled solver against the fluid "
+                     "solve plus the one-way cloud; median of the repeats' ratios; range %.2f "
+                     "to %.2f; of the least times %.2f): target <= 1.3 %s.\n"
+                     % (cost["ratioTarget"], min(cost["ratioTargetAllRepeats"]),
+                        max(cost["ratioTargetAllRepeats"]), cost["ratioTargetOfLeast"],
+                        "met" if ok else "NOT met"))
+        lines.append("What the reaction and its spreading add to a run whose carrier already "
+                     "feels the spread volume: twoWay / oneWay = %.2f (range %.2f to %.2f; of "
+                     "the least times %.2f). With one-cell deposits (kernel none) twoWayNone / "
+                     "oneWayNone = %.2f (range %.2f to %.2f); with the kernel in the default 4 "
+                     "pseudo-steps twoWayN4 / oneWayN4 = %.2f (range %.2f to %.2f).\n"
                      % (cost["ratioTwoWayOneWay"], min(cost["ratioTwoWayOneWayAllRepeats"]),
                         max(cost["ratioTwoWayOneWayAllRepeats"]),
-                        cost["ratioTwoWayOneWayOfLeast"], "met" if ok else "NOT met",
+                        cost["ratioTwoWayOneWayOfLeast"],
                         cost["ratioKernelNone"], min(cost["ratioKernelNoneAllRepeats"]),
                         max(cost["ratioKernelNoneAllRepeats"]), cost["ratioPseudoSteps4"],
                         min(cost["ratioPseudoSteps4AllRepeats"]),
@@ -304,7 +317,7 @@ def write(args, result):
                      "particleKernel 1, means over %d steps): the kernel %.0f pseudo-steps, "
                      "%.0f field solves of %.0f conjugate-gradient iterations in all (%.1f "
                      "each; theta, then UTrans x, y, z and UCoeff in lock-step, to the "
-                     "default tolerance 1e-6); the pressure %.0f solves of %.0f iterations "
+                     "kernel's default tolerance); the pressure %.0f solves of %.0f iterations "
                      "in all.\n"
                      % (it["steps"], it["kernelPseudoStepsPerStep"], it["kernelSolvesPerStep"],
                         it["kernelIterationsPerStep"],

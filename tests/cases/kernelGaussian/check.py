@@ -28,6 +28,9 @@ cancel in the sums), so the 1-D closed forms apply.
   (0.083 at N = 4, 0.022 at N = 16), printed with the spread's distance to
   the Gaussian: the latter is the former plus at most the grid's error
   above.
+- The solves run converged (tolerance 1e-14), so that the checks see the
+  discrete operator and not the solver's default tolerance (whose own
+  bound, 2 N tolerance in the same L1 norm, kernelConservation checks).
 - Wall: the deposit 2.5 cells (a = 25 mm) from the wall x = -0.12: the
   zero-flux wall reflects, the profile is the kernel plus its image in
   the wall (the grid is mirror-symmetric about a wall face, so the image
@@ -84,7 +87,8 @@ def gaussian_distance(N):
 
 def spread(n, N, x0):
     h = side / n
-    s = kernel.spread(mesh(n), "type diffusion; width 3; widthUnit diameters; pseudoSteps %d;" % N,
+    s = kernel.spread(mesh(n), "type diffusion; width 3; widthUnit diameters; pseudoSteps %d; "
+                      "tolerance 1e-14;" % N,
                       d, [((x0, h / 2, h / 2), vp)])
     return h, s.cells
 

@@ -464,7 +464,7 @@ Foam::particleKernel::particleKernel
     tolerance_
     (
         type_ == kernelType::diffusion
-      ? checkedEntry::inRange(dict, "tolerance", 1e-15, true, 1e-3, true, 1e-6)
+      ? checkedEntry::inRange(dict, "tolerance", 1e-15, true, 1e-3, true, 1e-4)
       : 0
     ),
     largestDiameter_(0),
