@@ -46,7 +46,11 @@ oneWayNone; the kernel's spreading of the reaction = (twoWay -
 twoWayNone) - (oneWay - oneWayNone). Then one more twoWay run with the
 debug switch particleKernel 1 counts the kernel's pseudo-steps and
 conjugate-gradient iterations (per field: theta, and UTrans x, y, z and
-UCoeff in lock-step) and the pressure's solves and iterations.
+UCoeff in lock-step) and the pressure's solves and iterations, and times
+the kernel's calls against the step in the same process: its share of
+the step and twoWay / (twoWay - kernel), a reading of the ratio that the
+machine's varying load does not move (the variants' times, minutes
+apart, scatter by up to a fifth on a shared machine).
 
 Suite 'ranks': the twoWay and twoWayNone scenes on one and on two
 processors (decomposePar, simple, split along the riser's axis z),
@@ -159,7 +163,15 @@ def iterations(case):
     pseudo = [len(re.findall(r"particleKernel: pseudo-step", s)) for s in steps]
     p = [[int(n) for n in re.findall(r"Solving for p, .* No Iterations (\d+)", s)] for s in steps]
     mean = lambda xs: sum(xs) / len(xs)
+    # CPU times of the same run: the kernel's calls and the whole step
+    # (ExecutionTime, cumulative), so that the machine's load falls on both
+    spread = [sum(float(t) for t in re.findall(r"particleKernel: \d+ field\(s\) spread in (\S+) s", s))
+              for s in steps]
+    clock = [float(re.search(r"ExecutionTime = (\S+) s", s).group(1)) for s in log.split("\nTime = ")[2:]]
+    step_cpu = [b - a for a, b in zip(clock, clock[1:])]
     return {"steps": len(steps),
+            "kernelCpuPerStep": mean(spread[:-1]),
+            "stepCpuPerStep": mean(step_cpu[:-1]),
             "kernelPseudoStepsPerStep": mean(pseudo),
             "kernelSolvesPerStep": mean([len(k) for k in kernel]),
             "kernelIterationsPerStep": mean([sum(k) for k in kernel]),
@@ -323,6 +335,15 @@ def write(args, result):
                         it["kernelIterationsPerStep"],
                         it["kernelIterationsPerStep"] / it["kernelSolvesPerStep"],
                         it["pressureSolvesPerStep"], it["pressureIterationsPerStep"]))
+        k, step = it["kernelCpuPerStep"], it["stepCpuPerStep"]
+        lines.append("The kernel's own CPU time in that run (its calls timed by the debug "
+                     "switch, against the step's ExecutionTime in the same process, so that "
+                     "the machine's load falls on both alike): %s of %s ms a step (%.0f %%); "
+                     "the step without it would take %s ms, and **twoWay / (twoWay - kernel) = "
+                     "%.2f**: what the coupling costs if its other parts (the reaction's "
+                     "assembly, the carrier's volume fraction in the equations) cost nothing, "
+                     "as the one-cell variants find (twoWayNone / oneWayNone above).\n"
+                     % (ms(k), ms(step), 100 * k / step, ms(step - k), step / (step - k)))
     ranks = result["suites"].get("ranks")
     if ranks:
         lines.append("## One and two processors\n\nThe twoWay and twoWayNone scenes, %d steps, "

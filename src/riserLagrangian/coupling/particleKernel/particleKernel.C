@@ -11,6 +11,7 @@
 #include "zeroGradientFvPatchFields.H"
 #include "IStringStream.H"
 #include "PstreamCombineReduceOps.H"
+#include "cpuTimeCxx.H"
 #include "riserFoamVersion.H"
 
 #include <Eigen/Core>
@@ -80,6 +81,127 @@ scalarField dicReciprocal(const lduMatrix& A)
     return 1/d;
 }
 
+} // End anonymous namespace
+
+
+// * * * * * * * * * * * * * * * The pseudo-step * * * * * * * * * * * * * * //
+
+//- A pseudo-step's matrix A = V - dtau laplacian (Gauss linear
+//  uncorrected), its coupled patches' diagonal share included (cyclic,
+//  processor) as OpenFOAM's segregated solve sets it, with what the
+//  solves need of it: the DIC factor, the sweeps' face factors, the
+//  coupled patches and the cells next to them. Built for one bandwidth;
+//  particleKernel keeps it while the mesh stands still
+class Foam::particleKernelPseudoStep
+{
+    //- A zero field whose patch fields the interfaces refer to
+    tmp<volScalarField> work_;
+
+    //- The matrix as assembled (its boundary coefficients)
+    tmp<fvScalarMatrix> eq_;
+
+    static tmp<fvScalarMatrix> assemble
+    (
+        volScalarField& work,
+        const scalar dtau
+    )
+    {
+        const fvMesh& mesh = work.mesh();
+        IStringStream schemeSpec("Gauss linear uncorrected");
+        tmp<fv::laplacianScheme<scalar, scalar>> laplacian
+        (
+            fv::laplacianScheme<scalar, scalar>::New(mesh, schemeSpec)
+        );
+        const surfaceScalarField dtauf
+        (
+            IOobject
+            (
+                "particleKernel:dtau",
+                mesh.time().timeName(),
+                mesh,
+                IOobject::NO_READ,
+                IOobject::NO_WRITE,
+                false
+            ),
+            mesh,
+            dimensionedScalar("dtau", dimArea, dtau)
+        );
+        return
+            fvm::Sp(dimensionedScalar("one", dimless, 1), work)
+          - laplacian->fvmLaplacian(dtauf, work);
+    }
+
+public:
+
+    //- The bandwidth and the time index it was built for
+    const scalar b;
+    const label timeIndex;
+
+    //- A, its diagonal D (internal and coupled coefficients)
+    lduMatrix A;
+    const lduInterfaceFieldPtrsList interfaces;
+
+    //- The DIC factor's reciprocal pivots
+    const scalarField rD;
+
+    //- The sweeps' face factors: rD of the face's upper cell times its
+    //  coefficient (the forward sweep), of its lower cell (the backward)
+    scalarField forward, backward;
+
+    //- The cells next to the coupled patches
+    labelList couplingCells;
+
+    particleKernelPseudoStep
+    (
+        tmp<volScalarField> work,
+        const scalar dtau,
+        const scalar b,
+        const label timeIndex
+    )
+    :
+        work_(work),
+        eq_(assemble(work_.ref(), dtau)),
+        b(b),
+        timeIndex(timeIndex),
+        A(eq_()),
+        interfaces(work_().boundaryField().scalarInterfaces()),
+        rD((A.diag() = eq_().D(), dicReciprocal(A))),
+        forward(A.upper().size()),
+        backward(A.upper().size())
+    {
+        const labelUList& lower = A.lduAddr().lowerAddr();
+        const labelUList& upper = A.lduAddr().upperAddr();
+        forAll(forward, f)
+        {
+            forward[f] = rD[upper[f]]*A.upper()[f];
+            backward[f] = rD[lower[f]]*A.upper()[f];
+        }
+        labelHashSet cells;
+        forAll(interfaces, patchi)
+        {
+            if (interfaces.set(patchi))
+            {
+                cells.insert(A.lduAddr().patchAddr(patchi));
+            }
+        }
+        couplingCells = cells.sortedToc();
+    }
+
+    //- The coupled patches' coefficients
+    const FieldField<Field, scalar>& bouCoeffs() const
+    {
+        return eq_().boundaryCoeffs();
+    }
+};
+
+
+// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+
+namespace
+{
+
+using namespace Foam;
+
 
 //- One cell's entries of K interleaved fields, as a small fixed-size
 //  array: its arithmetic is one SIMD instruction for two fields where the
@@ -111,23 +233,14 @@ inline Eigen::Map<const Lanes<K>> lanes(const scalar* p)
 template<label K>
 class lockstepPCG
 {
+    const particleKernelPseudoStep& step_;
     const lduMatrix& A_;
     const scalarField& rD_;
-    const FieldField<Field, scalar>& bouCoeffs_;
-    const lduInterfaceFieldPtrsList& interfaces_;
     const label n_;
 
     //- Work fields, interleaved: solution, residual, preconditioned
     //  residual, direction, A times direction
     scalarField x_, r_, w_, p_, q_;
-
-    //- The preconditioner's face factors: rD of the face's upper cell
-    //  times its coefficient (the forward sweep), of its lower cell (the
-    //  backward sweep)
-    scalarField forward_, backward_;
-
-    //- The cells next to the coupled patches (cyclic, processor)
-    labelList couplingCells_;
 
     //- One field's values and its interface contribution (the coupled
     //  patches' updates take one scalar field at a time), set at the
@@ -172,13 +285,16 @@ class lockstepPCG
         // the coupled patches read and write their cells only
         for (label k = 0; k < K; ++k)
         {
-            for (const label i : couplingCells_)
+            for (const label i : step_.couplingCells)
             {
                 one_[i] = vp[K*i + k];
                 oneResult_[i] = 0;
             }
-            addCoupledProduct(A_, bouCoeffs_, interfaces_, one_, oneResult_);
-            for (const label i : couplingCells_)
+            addCoupledProduct
+            (
+                A_, step_.bouCoeffs(), step_.interfaces, one_, oneResult_
+            );
+            for (const label i : step_.couplingCells)
             {
                 yp[K*i + k] += oneResult_[i];
             }
@@ -192,10 +308,10 @@ class lockstepPCG
     {
         const label* const __restrict__ lower = A_.lduAddr().lowerAddr().begin();
         const label* const __restrict__ upper = A_.lduAddr().upperAddr().begin();
-        const scalar* const __restrict__ fw = forward_.begin();
-        const scalar* const __restrict__ bw = backward_.begin();
+        const scalar* const __restrict__ fw = step_.forward.begin();
+        const scalar* const __restrict__ bw = step_.backward.begin();
         scalar* const w = w_.begin();
-        const label nFaces = forward_.size();
+        const label nFaces = step_.forward.size();
         for (label f = 0; f < nFaces; ++f)
         {
             lanes<K>(w + K*upper[f]) -= fw[f]*lanes<K>(w + K*lower[f]);
@@ -219,46 +335,20 @@ class lockstepPCG
 
 public:
 
-    lockstepPCG
-    (
-        const lduMatrix& A,
-        const scalarField& rD,
-        const FieldField<Field, scalar>& bouCoeffs,
-        const lduInterfaceFieldPtrsList& interfaces
-    )
+    explicit lockstepPCG(const particleKernelPseudoStep& step)
     :
-        A_(A),
-        rD_(rD),
-        bouCoeffs_(bouCoeffs),
-        interfaces_(interfaces),
-        n_(rD.size()),
+        step_(step),
+        A_(step.A),
+        rD_(step.rD),
+        n_(rD_.size()),
         x_(K*n_),
         r_(K*n_),
         w_(K*n_),
         p_(K*n_),
         q_(K*n_),
-        forward_(A.upper().size()),
-        backward_(A.upper().size()),
         one_(n_, Zero),
         oneResult_(n_, Zero)
-    {
-        const labelUList& lower = A_.lduAddr().lowerAddr();
-        const labelUList& upper = A_.lduAddr().upperAddr();
-        forAll(forward_, f)
-        {
-            forward_[f] = rD_[upper[f]]*A_.upper()[f];
-            backward_[f] = rD_[lower[f]]*A_.upper()[f];
-        }
-        labelHashSet cells;
-        forAll(interfaces_, patchi)
-        {
-            if (interfaces_.set(patchi))
-            {
-                cells.insert(A_.lduAddr().patchAddr(patchi));
-            }
-        }
-        couplingCells_ = cells.sortedToc();
-    }
+    {}
 
     //- Solve A x = V x0 for the K fields fields[first .. first + K - 1]
     //  in place, from x0 (the previous pseudo-step), to residuals of at
@@ -394,14 +484,11 @@ void pseudoSteps
     const label nSteps,
     const scalarField& V,
     const scalarField& stop,
-    const lduMatrix& A,
-    const scalarField& rD,
-    const FieldField<Field, scalar>& bouCoeffs,
-    const lduInterfaceFieldPtrsList& interfaces,
+    const particleKernelPseudoStep& pseudoStep,
     const bool report
 )
 {
-    lockstepPCG<K> solver(A, rD, bouCoeffs, interfaces);
+    lockstepPCG<K> solver(pseudoStep);
     FixedList<scalar, K> stopK;
     for (label k = 0; k < K; ++k)
     {
@@ -478,6 +565,12 @@ Foam::particleKernel::particleKernel
         bandwidth(0);
     }
 }
+
+
+// * * * * * * * * * * * * * * * * Destructor  * * * * * * * * * * * * * * * //
+
+Foam::particleKernel::~particleKernel()
+{}
 
 
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
@@ -605,44 +698,28 @@ void Foam::particleKernel::diffuse
     const scalar b
 ) const
 {
+    const cpuTimeCxx timer;
     const scalar dtau = sqr(b)/4/pseudoSteps_;
     const scalarField& V = mesh_.V().field();
 
-    // The matrix V - dtau laplacian, its coupled patches' diagonal share
-    // included (cyclic, processor), as OpenFOAM's segregated solve sets it
-    tmp<volScalarField> twork(workField("spread"));
-    IStringStream schemeSpec("Gauss linear uncorrected");
-    tmp<fv::laplacianScheme<scalar, scalar>> laplacian
+    // the pseudo-step: built again for another bandwidth, or each time
+    // step on a moving mesh
+    if
     (
-        fv::laplacianScheme<scalar, scalar>::New(mesh_, schemeSpec)
-    );
-    const surfaceScalarField dtauf
-    (
-        IOobject
+        !pseudoStep_
+     || pseudoStep_->b != b
+     || (mesh_.changing() && pseudoStep_->timeIndex != mesh_.time().timeIndex())
+    )
+    {
+        pseudoStep_.reset
         (
-            "particleKernel:dtau",
-            mesh_.time().timeName(),
-            mesh_,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        ),
-        mesh_,
-        dimensionedScalar("dtau", dimArea, dtau)
-    );
-    const fvScalarMatrix eq
-    (
-        fvm::Sp(dimensionedScalar("one", dimless, 1), twork.ref())
-      - laplacian->fvmLaplacian(dtauf, twork.ref())
-    );
-    lduMatrix A(eq);
-    A.diag() = eq.D();
-    const lduInterfaceFieldPtrsList interfaces
-    (
-        twork().boundaryField().scalarInterfaces()
-    );
-    const FieldField<Field, scalar>& bouCoeffs = eq.boundaryCoeffs();
-    const scalarField rD(dicReciprocal(A));
+            new particleKernelPseudoStep
+            (
+                workField("spread"), dtau, b, mesh_.time().timeIndex()
+            )
+        );
+    }
+    const particleKernelPseudoStep& pseudoStep = *pseudoStep_;
 
     const label nFields = densities.size();
     scalarField total0(nFields), stop(nFields), lowest(nFields);
@@ -665,29 +742,29 @@ void Foam::particleKernel::diffuse
             case 1:
                 pseudoSteps<1>
                 (
-                    densities, first, pseudoSteps_, V, stop, A, rD,
-                    bouCoeffs, interfaces, debug
+                    densities, first, pseudoSteps_, V, stop, pseudoStep,
+                    debug
                 );
                 break;
             case 2:
                 pseudoSteps<2>
                 (
-                    densities, first, pseudoSteps_, V, stop, A, rD,
-                    bouCoeffs, interfaces, debug
+                    densities, first, pseudoSteps_, V, stop, pseudoStep,
+                    debug
                 );
                 break;
             case 3:
                 pseudoSteps<3>
                 (
-                    densities, first, pseudoSteps_, V, stop, A, rD,
-                    bouCoeffs, interfaces, debug
+                    densities, first, pseudoSteps_, V, stop, pseudoStep,
+                    debug
                 );
                 break;
             default:
                 pseudoSteps<4>
                 (
-                    densities, first, pseudoSteps_, V, stop, A, rD,
-                    bouCoeffs, interfaces, debug
+                    densities, first, pseudoSteps_, V, stop, pseudoStep,
+                    debug
                 );
                 break;
         }
@@ -716,6 +793,11 @@ void Foam::particleKernel::diffuse
         {
             densities[k] += ((total0[k] - total[k])/weight[k])*mag(densities[k]);
         }
+    }
+    if (debug)
+    {
+        Info<< "particleKernel: " << nFields << " field(s) spread in "
+            << timer.elapsedCpuTime() << " s of CPU time" << endl;
     }
 }
 
