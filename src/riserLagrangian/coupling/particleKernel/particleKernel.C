@@ -131,6 +131,14 @@ class Foam::particleKernelPseudoStep
           - laplacian->fvmLaplacian(dtauf, work);
     }
 
+    //- The matrix with its diagonal D
+    static lduMatrix withDiagonal(const fvScalarMatrix& eq)
+    {
+        lduMatrix A(eq);
+        A.diag() = eq.D();
+        return A;
+    }
+
 public:
 
     //- The bandwidth and the time index it was built for
@@ -138,7 +146,7 @@ public:
     const label timeIndex;
 
     //- A, its diagonal D (internal and coupled coefficients)
-    lduMatrix A;
+    const lduMatrix A;
     const lduInterfaceFieldPtrsList interfaces;
 
     //- The DIC factor's reciprocal pivots
@@ -163,9 +171,9 @@ public:
         eq_(assemble(work_.ref(), dtau)),
         b(b),
         timeIndex(timeIndex),
-        A(eq_()),
+        A(withDiagonal(eq_())),
         interfaces(work_().boundaryField().scalarInterfaces()),
-        rD((A.diag() = eq_().D(), dicReciprocal(A))),
+        rD(dicReciprocal(A)),
         forward(A.upper().size()),
         backward(A.upper().size())
     {
@@ -195,7 +203,7 @@ public:
 };
 
 
-// * * * * * * * * * * * * * * * Local Functions * * * * * * * * * * * * * * //
+// * * * * * * * * * * * * * * * The solves  * * * * * * * * * * * * * * * * //
 
 namespace
 {
