@@ -581,6 +581,16 @@ Foam::particleKernel::~particleKernel()
 {}
 
 
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+bool Foam::particleKernel::outdated(const label builtAt) const
+{
+    return
+        builtAt < 0
+     || (mesh_.changing() && builtAt != mesh_.time().timeIndex());
+}
+
+
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 Foam::scalar Foam::particleKernel::largestCellSize() const
@@ -630,13 +640,8 @@ Foam::scalar Foam::particleKernel::bandwidth(const scalar dMax) const
         FatalErrorInFunction
             << "the kernel of type none has no bandwidth" << exit(FatalError);
     }
-    // the mesh's sizes: once, or once per time step on a moving mesh (the
-    // riser's moves rigidly and keeps them, a mesh moved otherwise may not)
-    if
-    (
-        sizesTimeIndex_ < 0
-     || (mesh_.changing() && sizesTimeIndex_ != mesh_.time().timeIndex())
-    )
+    // the mesh's sizes
+    if (outdated(sizesTimeIndex_))
     {
         largestCellSize_ = largestCellSize();
         crossSection_ = crossSection();
@@ -710,14 +715,8 @@ void Foam::particleKernel::diffuse
     const scalar dtau = sqr(b)/4/pseudoSteps_;
     const scalarField& V = mesh_.V().field();
 
-    // the pseudo-step: built again for another bandwidth, or each time
-    // step on a moving mesh
-    if
-    (
-        !pseudoStep_
-     || pseudoStep_->b != b
-     || (mesh_.changing() && pseudoStep_->timeIndex != mesh_.time().timeIndex())
-    )
+    // the pseudo-step, built again for another bandwidth
+    if (!pseudoStep_ || pseudoStep_->b != b || outdated(pseudoStep_->timeIndex))
     {
         pseudoStep_.reset
         (
