@@ -41,16 +41,23 @@ Description
     Each step: store the particles' global positions and move the mesh (lab
     frame: constant/dynamicMeshDict, solidBodyMotionFunction
     riserOscillation; the carrier's flux, relative to the mesh, kept
-    through the rigid move), evolve the cloud in the present carrier
-    (interpolated, carrierFlow), take alpha_c and the reaction from the
-    particles, then the PIMPLE loop: the momentum predictor with the
-    reaction's implicit part in the matrix; pressure corrections in which
-    the reaction's explicit part, the drive and b_r act through the face
-    fluxes (as the pressure gradient does, so that a pressure gradient
+    through the rigid move); take alpha_c from the particles as they stand
+    at the step's start and the reaction of the forces of their last step
+    (the previous flow step's); the PIMPLE loop: the momentum predictor
+    with the reaction's implicit part in the matrix; pressure corrections in
+    which the reaction's explicit part, the drive and b_r act through the
+    face fluxes (as the pressure gradient does, so that a pressure gradient
     balances a uniform force exactly), each followed by the drive's
     adjustment to the target bulk velocity (by the momentum matrix's own
     response to a uniform axial acceleration, riserDrive); the turbulence
-    model's correction.
+    model's correction; then evolve the cloud in the carrier of the step:
+    its velocity at the step's end, and its change over the step, which the
+    fluid stress and the added mass take through the carrier's material
+    derivative (carrierFlow: fvc::ddt(U), plus the convective part relative
+    to the moving mesh). Moving the particles before the carrier would give
+    them the carrier of the step before with no change over their step: in
+    the lab frame they would not feel the riser's acceleration through the
+    fluid, nor in either frame the local change of an unsteady carrier.
 
     Checks at start, shared with riserParcelFoam (riserCommon): a
     restart's start time is complete (checkStartTime.H); the riser agrees
@@ -88,7 +95,8 @@ Usage
     constant/<cloud>Properties: the riser cloud's dictionary (as for
     riserParcelFoam), with in its solution dictionary coupled true for a
     two-way run and the semi-implicit source scheme for U
-    (sourceTerms { schemes { U semiImplicit 1; } }), and in
+    (sourceTerms { schemes { U semiImplicit 1; } }; explicit is refused),
+    and in
     constantProperties
     \verbatim
     alphaMax    0.6;            // largest solids volume fraction of a cell,
@@ -127,8 +135,11 @@ Usage
     gives the wall the pressure gradient that balances the forces through
     the fluxes), and the turbulence model's (and system/fvSchemes wallDist
     for the models that need the wall distance); written
-    besides: phi, alphac, particleForce (the particles' explicit reaction
-    over rho [m/s^2]), the cloud, and <time>/uniform/riserDrive (the
+    besides: phi, alphac (the one of the step that wrote the time: of the
+    particles at the step's start, read back by a continuation as its
+    first step's old time), particleForce (the particles' explicit reaction
+    over rho [m/s^2]), the cloud (with its sources UTrans and UCoeff, the
+    reaction of a continuation's first step), and <time>/uniform/riserDrive (the
     drive's dp/dz). The drive's time series is
     postProcessing/riserDrive/<start time>/drive.dat (t, dpdz [Pa/m], Ub).
 
@@ -266,14 +277,19 @@ int main(int argc, char *argv[])
         laminarTransport.correct();
         mu = laminarTransport.nu()*rhoInfValue;
 
-        Info<< "Evolving " << kinematicCloud.name() << endl;
-        kinematicCloud.evolve();
-        #include "finishCloudStep.H"
-
         aRiser.value() = riserAcceleration();
 
-        // What the carrier takes from the particles (particleCoupling.H)
+        // What the carrier takes from the particles as they stand at the
+        // step's start (particleCoupling.H): their volume fraction, and
+        // the reaction of the forces of their last step
         coupling.volumeFraction(alphac);
+        if (gMin(alphac.oldTime().primitiveField()) == 1)
+        {
+            // the carrier held no particles before: those filled in since
+            // (riserFill) do not displace it through the continuity
+            // equation, which in a periodic section would have no solution
+            alphac.oldTime() == alphac;
+        }
         alphacf = fvc::interpolate(alphac);
         alphaPhi = alphacf*phi;
         const tmp<fvVectorMatrix> tparticleReaction
@@ -298,6 +314,14 @@ int main(int argc, char *argv[])
                 turbulence->correct();
             }
         }
+
+        // The particles' step in the carrier of the step: its velocity at
+        // the step's end and its change over the step, fvc::ddt(U), which
+        // the fluid stress and the added mass take (carrierFlow's Du/Dt),
+        // in either frame
+        Info<< "Evolving " << kinematicCloud.name() << endl;
+        kinematicCloud.evolve();
+        #include "finishCloudStep.H"
 
         if (drive.valid())
         {

@@ -294,6 +294,12 @@ Foam::carrierFlow::buildMaterialDerivative() const
 }
 
 
+Foam::tmp<Foam::volVectorField> Foam::carrierFlow::buildVelocityChange() const
+{
+    return U_ - U_.oldTime();
+}
+
+
 void Foam::carrierFlow::cache
 (
     cachedField& c,
@@ -352,6 +358,26 @@ void Foam::carrierFlow::cacheMaterialDerivative
         materialDerivative_, store, schemes,
         "carrierMaterialDerivative", &carrierFlow::buildMaterialDerivative
     );
+}
+
+
+void Foam::carrierFlow::cacheVelocityChange
+(
+    const bool store,
+    const dictionary& schemes
+)
+{
+    const bool built = !velocityChange_.field;
+    cache
+    (
+        velocityChange_, store, schemes,
+        "carrierVelocityChange", &carrierFlow::buildVelocityChange
+    );
+    if (store && built && velocityChange_.field)
+    {
+        steadyStep_ =
+            gMax(mag(velocityChange_.field->primitiveField())()) == 0;
+    }
 }
 
 

@@ -46,7 +46,13 @@ Foam::vector Foam::carrierFlow::velocity
 {
     if (!exact())
     {
-        return Uc;
+        // U at the particle's time: linear in time over the flow step
+        const scalar lag = 1 - p.stepFraction();
+        if (lag == 0 || (velocityChange_.interp && steadyStep_))
+        {
+            return Uc;
+        }
+        return Uc - lag*interpolate(velocityChange_, p);
     }
     return fromCore
     (

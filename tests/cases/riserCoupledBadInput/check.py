@@ -85,6 +85,10 @@ expect("alphaMax 0.8", "entry 'alphaMax' = 0.8 is outside the allowed range (0, 
 expect("no alphaMax", "alphaMax", cloud(r"alphaMax 0.6;", ""))
 expect("no kernel", "riserCoupledFoam needs the sub-dictionary 'kernel'",
        cloud(r"kernel \{ type none; \}", ""))
+expect("U explicit (the reaction needs its semi-implicit split)",
+       "entry 'sourceTerms { schemes { U ... } }' = explicit",
+       lambda case: (cloud("coupled +false;", "coupled true;")(case),
+                     cloud(r"U semiImplicit 1;", "U explicit 1;")(case)), io=True)
 expect("a kernel wider than the riser", "entry 'width'",
        cloud(r"kernel \{ type none; \}",
              "kernel { type diffusion; width 0.2; widthUnit metres; }"))

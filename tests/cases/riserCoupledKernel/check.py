@@ -41,12 +41,16 @@ in a step). Checked:
   1 - alphaMax = 0.4 (measured 0.987 to 0.988: the kernel spreads an
   ore's 14 mm^3 over a Gaussian of (pi b^2)^(3/2) = 9600 mm^3, where
   the one-cell deposit puts it in a cell of 4.6 mm^3 at h = 0.56 d);
-- conservation of the reaction: one step from a carrier moving uniformly
-  at 0.05 m/s (so that the explicit part of the semi-implicit reaction
-  holds the implicit coefficient times that velocity too, and the check
-  covers the spread UCoeff as well as the spread UTrans): the solver's
-  written explicit reaction, sum(particleForce V) rho_f dt, equals the
-  ores' sum(UTrans) + sum(UCoeff) U0 (the cloud's unspread deposits),
+- conservation of the reaction: two steps from a carrier moving uniformly
+  at 0.05 m/s, driven at that bulk velocity (it stays uniform through the
+  first step, whose carrier holds no ores yet: checked to 1e-12), so that
+  the explicit part of the semi-implicit reaction holds the implicit
+  coefficient times that velocity too, and the check covers the spread
+  UCoeff as well as the spread UTrans: the solver's written explicit
+  reaction of the second step, sum(particleForce V) rho_f dt, equals the
+  ores' sum(UTrans) + sum(UCoeff) U0 of their first step (the cloud's
+  unspread deposits written at the first step; the carrier takes the
+  reaction of the particles' previous step),
   relative to |sum(UTrans)| + |sum(UCoeff) U0| (the two nearly cancel:
   the ores start at the carrier's velocity), to 1e-10: the spreading
   solves to a residual of 1e-14 and the fields are written with 17
@@ -70,12 +74,12 @@ GRIDS = ((12, 24), (6, 12), (4, 8))
 ORES = cases.fill_injection(CV, d)
 
 
-def suspension(name, n, nz, kernel, end=END, U0=(0.0, 0.0, 0.0)):
+def suspension(name, n, nz, kernel, end=END, U0=(0.0, 0.0, 0.0), bulk=0.0):
     """the case, written every 0.05 s (T0 and END among them), or each
     step of a shorter run"""
     case = os.path.abspath(name)
     cases.coupled_pipe_case(case, n, nz, L=L, D=D, rho=RHO, dt=DT, end=end, U0=U0,
-                            drive="bulkVelocity 0;", coupled=True,
+                            drive="bulkVelocity %r;" % bulk, coupled=True,
                             write_every=round(0.05 / DT) if end > T0 else 1,
                             injection=ORES, kernel=kernel)
     foamfields.edit(os.path.join(case, "0/U"), r"riserWall \{[^}]*\}", "riserWall { type slip; }")
@@ -111,7 +115,8 @@ def measure(case):
 
 runs = [suspension("kernel%d" % n, n, nz, KERNEL) for n, nz in GRIDS]
 runs += [suspension("oneCell%d" % n, n, nz, "type none;") for n, nz in (GRIDS[0], GRIDS[-1])]
-step = suspension("oneStep", GRIDS[-1][0], GRIDS[-1][1], KERNEL, end=DT, U0=(0.0, 0.0, 0.05))
+step = suspension("oneStep", GRIDS[-1][0], GRIDS[-1][1], KERNEL, end=2 * DT,
+                  U0=(0.0, 0.0, 0.05), bulk=0.05)
 foamfields.set_entry(os.path.join(step, "system/controlDict"), "writePrecision", "17")
 # the two fine grids first, side by side (two cores)
 with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
@@ -151,11 +156,17 @@ checks.failures += not ok
 print("one-cell deposits on the finest grid more than 5 %% off the balance: %s"
       % ("ok" if ok else "FAILED"))
 
-# conservation of the spread reaction over one step
-V = foamfields.read_scalars(at(step, DT, "V"), "internalField")
-force = foamfields.read_vectors(at(step, DT, "particleForce"), "internalField")
+# conservation of the spread reaction over one step: the reaction the
+# carrier takes in the second step is that of the ores' first step (the
+# cloud's sources written at DT), on the carrier at the second step's start
+V = foamfields.read_scalars(at(step, 2 * DT, "V"), "internalField")
+force = foamfields.read_vectors(at(step, 2 * DT, "particleForce"), "internalField")
 uTrans = foamfields.read_vectors(at(step, DT, "kinematicCloud:UTrans"))
 uCoeff = foamfields.read_scalars(at(step, DT, "kinematicCloud:UCoeff"))
+U1 = [u[2] for u in foamfields.read_vectors(at(step, DT, "U"), "internalField")]
+print("one step: carrier at DT, axial velocity %.17g to %.17g m/s" % (min(U1), max(U1)))
+checks.near("one step: the carrier at DT still uniform at U0 [m/s] (no ores in it)",
+            max(abs(u - 0.05) for u in U1), 0, 1e-12, 0.05)
 spread = sum(f[2] * v for f, v in zip(force, V)) * RHO * DT
 explicit, implicit = sum(u[2] for u in uTrans), 0.05 * sum(uCoeff)
 print("one step: sum(UTrans) %.6g, sum(UCoeff) U0 %.6g [kg m/s]" % (explicit, implicit))

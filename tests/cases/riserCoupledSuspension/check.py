@@ -15,9 +15,13 @@ volume). The one-cell deposit (kernel { type none; }): an ore fills
 about 5 % of a cell; riserCoupledKernel spreads coarser ones.
 Checked:
 
-- the cloud's reaction, sum UTrans / dt over the cells, against the
-  buoyant weight of the ores: within 1 % (terminal speed reached:
-  measured 0.06 % at t = 0.3 s);
+- the cloud's reaction, sum UTrans / dt over the cells, averaged over
+  the written steps (every 10th) of the last 0.1 s, against the buoyant
+  weight of the ores: within 1 % (terminal speed reached: measured
+  0.09 %). A single step's scatters by about 1 % (0.989 to 1.013 of the
+  weight): the ores feel the carrier's change over their step (fluid
+  stress and added mass), which an ore passing from cell to cell jolts
+  where it changes alpha_c by a few percent (one-cell deposits);
 - dp/dz averaged over the last 0.1 s against the closed form: within
   3 %. Measured 1.5 %: the reaction enters the carrier cell by cell (type
   none), so each ore passing from cell to cell changes alpha_c there by a
@@ -41,7 +45,7 @@ D, L, RHO, RHO_P, G, CV, d = 0.1, 0.1, 1000.0, 2000.0, 9.81, 0.005, 0.002
 DT, END = 1e-3, 0.3
 case = os.path.abspath("suspension")
 cases.coupled_pipe_case(case, 12, None, L=L, D=D, rho=RHO, dt=DT, end=END,
-                        drive="bulkVelocity 0;", coupled=True, write_every=100,
+                        drive="bulkVelocity 0;", coupled=True, write_every=10,
                         kernel="type none;", injection=cases.fill_injection(CV, d))
 foamfields.edit(os.path.join(case, "0/U"), r"riserWall \{[^}]*\}", "riserWall { type slip; }")
 cases.solve_coupled(case)
@@ -54,9 +58,15 @@ cv = count * math.pi / 6 * d ** 3 / volume
 weight = cv * volume * (RHO_P - RHO) * G
 print("%d ores, C_v = %.6f" % (count, cv))
 
-reaction = sum(u[2] for u in foamfields.read_vectors(
-    os.path.join(last, "kinematicCloud:UTrans"))) / DT
-checks.near("the cloud's reaction [N] against the buoyant weight", -reaction, weight, 1e-2)
+# the reaction of the written steps of the last 0.1 s (every 10th step)
+written = [t for t in os.listdir(case)
+           if t.replace(".", "").isdigit() and END - 0.1 + 0.5 * DT < float(t) <= END + 0.5 * DT]
+reactions = [sum(u[2] for u in foamfields.read_vectors(
+    os.path.join(case, t, "kinematicCloud:UTrans"))) / DT for t in written]
+print("the cloud's reaction over the buoyant weight at %d steps of the last 0.1 s: %.4f to %.4f"
+      % (len(written), -max(reactions) / weight, -min(reactions) / weight))
+checks.near("the cloud's reaction [N] (last 0.1 s) against the buoyant weight",
+            -sum(reactions) / len(reactions), weight, 1e-2)
 
 drive = tables.read(os.path.join(case, "postProcessing/riserDrive/0/drive.dat"))
 late = drive["dpdz"][drive["t"] > END - 0.1 + 0.5 * DT]

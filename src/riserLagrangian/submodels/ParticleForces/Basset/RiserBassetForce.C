@@ -243,10 +243,9 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
 template<class CloudType>
 void Foam::RiserBassetForce<CloudType>::cacheFields(const bool store)
 {
-    carrier_.cacheMaterialDerivative
-    (
-        store, this->owner().solution().interpolationSchemes()
-    );
+    const dictionary& schemes = this->owner().solution().interpolationSchemes();
+    carrier_.cacheMaterialDerivative(store, schemes);
+    carrier_.cacheVelocityChange(store, schemes);
 }
 
 

@@ -41,7 +41,9 @@ Foam::RiserSaffmanMeiLiftForce<CloudType>::RiserSaffmanMeiLiftForce
 template<class CloudType>
 void Foam::RiserSaffmanMeiLiftForce<CloudType>::cacheFields(const bool store)
 {
-    carrier_.cacheVorticity(store, this->owner().solution().interpolationSchemes());
+    const dictionary& schemes = this->owner().solution().interpolationSchemes();
+    carrier_.cacheVorticity(store, schemes);
+    carrier_.cacheVelocityChange(store, schemes);
 }
 
 

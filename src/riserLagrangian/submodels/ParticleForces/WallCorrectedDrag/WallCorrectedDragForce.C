@@ -101,6 +101,16 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
 // * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
 
 template<class CloudType>
+void Foam::WallCorrectedDragForce<CloudType>::cacheFields(const bool store)
+{
+    carrier_.cacheVelocityChange
+    (
+        store, this->owner().solution().interpolationSchemes()
+    );
+}
+
+
+template<class CloudType>
 Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
 (
     const typename CloudType::parcelType& p,
@@ -118,11 +128,27 @@ Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
     {
         const scalar eps =
             voidage_ == riser::Voidage::none ? 1 : carrierFraction(p.cell());
-        return forceSuSp
+        // the carrier at the particle's time: the cloud's Uc (the step's
+        // end) unless the particle is inside a step of a changing carrier
+        const vector u = carrier_.velocity(p, td.Uc());
+        if (u == td.Uc())
+        {
+            return forceSuSp
+            (
+                Zero,
+                riser::suspensionDragFactor
+                (
+                    law_, factors, p.d(), muc, Re, voidage_, eps
+                )
+            );
+        }
+        const scalar Sp = riser::suspensionDragFactor
         (
-            Zero,
-            riser::suspensionDragFactor(law_, factors, p.d(), muc, Re, voidage_, eps)
+            law_, factors, p.d(), muc,
+            riser::particleReynolds(td.rhoc(), mag(u - p.U()), p.d(), muc),
+            voidage_, eps
         );
+        return forceSuSp(Sp*(u - td.Uc()), Sp);
     }
 
     const vector u = carrier_.velocity(p, td.Uc());
