@@ -70,7 +70,8 @@ Description
     fields are in the start time (else refused naming the model's entry
     and the missing file). A cloud with
     coupled false is a one-way run on the computed carrier: allowed, and
-    said in the log.
+    said in the log; its carrier does not see the particles (alpha_c = 1,
+    no reaction; a drag with a voidage function is refused).
 
 Usage
     riserCoupledFoam [-cloud name]
@@ -138,7 +139,10 @@ Usage
     besides: phi, alphac (the one of the step that wrote the time: of the
     particles at the step's start, read back by a continuation as its
     first step's old time), particleForce (the particles' explicit reaction
-    over rho [m/s^2]), the cloud (with its sources UTrans and UCoeff, the
+    over rho [m/s^2]), particleReaction (the whole reaction over rho, the
+    explicit part and the implicit part on the step's final U [m/s^2]: its
+    integral times rho is the force the carrier took from the particles in
+    the step), the cloud (with its sources UTrans and UCoeff, the
     reaction of a continuation's first step), and <time>/uniform/riserDrive (the
     drive's dp/dz). The drive's time series is
     postProcessing/riserDrive/<start time>/drive.dat (t, dpdz [Pa/m], Ub).
@@ -314,6 +318,11 @@ int main(int argc, char *argv[])
                 turbulence->correct();
             }
         }
+
+        particleCoupling::wholeReaction
+        (
+            particleReaction, particleForce, U, reactionField
+        );
 
         // The particles' step in the carrier of the step: its velocity at
         // the step's end and its change over the step, fvc::ddt(U), which

@@ -4,8 +4,9 @@ them a cloud without the coarse-particle kernel's sub-dictionary, which
 riserCoupledFoam requires, and a kernel out of its range; a turbulence
 model whose field is missing from the start time, refused naming the
 model's entry and the field's file, and a misspelt simulationType,
-refused by OpenFOAM naming the entry and the allowed types); a cloud that
-is not coupled runs one-way and says so."""
+refused by OpenFOAM naming the entry and the allowed types; the explicit
+source scheme for U; a drag with a voidage function in a one-way run); a
+cloud that is not coupled runs one-way and says so."""
 import os
 import shutil
 import subprocess
@@ -89,6 +90,10 @@ expect("U explicit (the reaction needs its semi-implicit split)",
        "entry 'sourceTerms { schemes { U ... } }' = explicit",
        lambda case: (cloud("coupled +false;", "coupled true;")(case),
                      cloud(r"U semiImplicit 1;", "U explicit 1;")(case)), io=True)
+expect("voidage in a one-way run (its carrier is not displaced)",
+       "entry 'voidage' = wenYu: the cloud is not coupled (coupled false)",
+       cloud(r"wallCorrectedDrag \{ law continuous; \}",
+             "wallCorrectedDrag { law continuous; voidage wenYu; }"), io=True)
 expect("a kernel wider than the riser", "entry 'width'",
        cloud(r"kernel \{ type none; \}",
              "kernel { type diffusion; width 0.2; widthUnit metres; }"))

@@ -56,6 +56,15 @@ in a step). Checked:
   solves to a residual of 1e-14 and the fields are written with 17
   digits (measured: 9e-16).
 
+- the whole reaction (particleReaction, the explicit part and the
+  implicit part on the step's final velocity), the same two steps with
+  one-cell deposits (type none): its integral times rho_f dt equals
+  sum(UTrans) + sum(UCoeff (U_1 - U_2)) over the cells, the ores'
+  first-step deposits with the implicit part of their drag moved from
+  the carrier of the second step's start to that of its end, each
+  component to 1e-10 of the sums of the axial parts' magnitudes (17 digits
+  written, the matrix's diagonal times the velocity: round-off);
+
 Grid-independence and balance figures from the run of the test are
 printed; the figures above are those measured when it was written.
 """
@@ -117,10 +126,14 @@ runs = [suspension("kernel%d" % n, n, nz, KERNEL) for n, nz in GRIDS]
 runs += [suspension("oneCell%d" % n, n, nz, "type none;") for n, nz in (GRIDS[0], GRIDS[-1])]
 step = suspension("oneStep", GRIDS[-1][0], GRIDS[-1][1], KERNEL, end=2 * DT,
                   U0=(0.0, 0.0, 0.05), bulk=0.05)
-foamfields.set_entry(os.path.join(step, "system/controlDict"), "writePrecision", "17")
+whole = suspension("wholeStep", GRIDS[-1][0], GRIDS[-1][1], "type none;", end=2 * DT,
+                   U0=(0.0, 0.0, 0.05), bulk=0.05)
+for case in (step, whole):
+    foamfields.set_entry(os.path.join(case, "system/controlDict"), "writePrecision", "17")
 # the two fine grids first, side by side (two cores)
 with concurrent.futures.ThreadPoolExecutor(max_workers=2) as pool:
-    list(pool.map(cases.solve_coupled, [runs[0], runs[3], runs[1], runs[2], runs[4], step]))
+    list(pool.map(cases.solve_coupled, [runs[0], runs[3], runs[1], runs[2], runs[4], step,
+                                        whole]))
 
 kernel = [measure(case) for case in runs[:3]]
 oneCell = [measure(case) for case in runs[3:]]
@@ -172,4 +185,25 @@ explicit, implicit = sum(u[2] for u in uTrans), 0.05 * sum(uCoeff)
 print("one step: sum(UTrans) %.6g, sum(UCoeff) U0 %.6g [kg m/s]" % (explicit, implicit))
 checks.near("one step: sum(particleForce V) rho dt against sum(UTrans + UCoeff U0)",
             spread, explicit + implicit, 1e-10, scale=abs(explicit) + abs(implicit))
+
+# the whole reaction of the second step (particleReaction: the explicit part
+# and the implicit part on the step's final U), one-cell deposits: times
+# rho, its integral is sum(UTrans + UCoeff (U_1 - U_2))/dt over the cells,
+# the ores' first-step deposits with their drag's implicit part moved from
+# the carrier at the step's start (U_1, at DT) to the one at its end (U_2)
+V = foamfields.read_scalars(at(whole, 2 * DT, "V"), "internalField")
+total = foamfields.read_vectors(at(whole, 2 * DT, "particleReaction"), "internalField")
+uTrans = foamfields.read_vectors(at(whole, DT, "kinematicCloud:UTrans"))
+uCoeff = foamfields.read_scalars(at(whole, DT, "kinematicCloud:UCoeff"))
+U1 = foamfields.read_vectors(at(whole, DT, "U"), "internalField")
+U2 = foamfields.read_vectors(at(whole, 2 * DT, "U"), "internalField")
+# (the sums of the axial parts' magnitudes, the reaction's size, scale all
+# three components)
+scale = sum(abs(u[2]) for u in uTrans) + sum(abs(c * b[2]) for c, b in zip(uCoeff, U2))
+for k, axis in enumerate("xyz"):
+    integral = sum(f[k] * v for f, v in zip(total, V)) * RHO * DT
+    deposits = (sum(u[k] for u in uTrans)
+                + sum(c * (a[k] - b[k]) for c, a, b in zip(uCoeff, U1, U2)))
+    checks.near("whole reaction, %s: sum(particleReaction V) rho dt against the deposits" % axis,
+                integral, deposits, 1e-10, scale=scale)
 checks.exit()
