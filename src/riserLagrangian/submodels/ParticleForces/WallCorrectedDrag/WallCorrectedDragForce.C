@@ -123,37 +123,20 @@ Foam::forceSuSp Foam::WallCorrectedDragForce<CloudType>::calcCoupled
 {
     const riser::WallFactors& factors = wallFactors(p.d());
 
-    // F = (pi d^2/8) rho C_D |w| w = Sp w
-    if (!carrier_.exact())
-    {
-        const scalar eps =
-            voidage_ == riser::Voidage::none ? 1 : carrierFraction(p.cell());
-        // the carrier at the particle's time: the cloud's Uc (the step's
-        // end) unless the particle is inside a step of a changing carrier
-        const vector u = carrier_.velocity(p, td.Uc());
-        if (u == td.Uc())
-        {
-            return forceSuSp
-            (
-                Zero,
-                riser::suspensionDragFactor
-                (
-                    law_, factors, p.d(), muc, Re, voidage_, eps
-                )
-            );
-        }
-        const scalar Sp = riser::suspensionDragFactor
-        (
-            law_, factors, p.d(), muc,
-            riser::particleReynolds(td.rhoc(), mag(u - p.U()), p.d(), muc),
-            voidage_, eps
-        );
-        return forceSuSp(Sp*(u - td.Uc()), Sp);
-    }
-
+    // F = (pi d^2/8) rho C_D |w| w = Sp w, with u the carrier at the
+    // particle's time: the exact one, or the interpolated one, which is the
+    // cloud's Uc (the step's end, whose slip the cloud's Re is) unless the
+    // particle is inside a step of a changing carrier. The part Sp Uc is
+    // the cloud's, the rest Su
     const vector u = carrier_.velocity(p, td.Uc());
-    const scalar ReExact = riser::particleReynolds(td.rhoc(), mag(u - p.U()), p.d(), muc);
-    const scalar Sp = riser::dragFactor(law_, factors, p.d(), muc, ReExact);
+    const scalar ReU =
+        !carrier_.exact() && u == td.Uc()
+      ? Re
+      : riser::particleReynolds(td.rhoc(), mag(u - p.U()), p.d(), muc);
+    const scalar eps =
+        voidage_ == riser::Voidage::none ? 1 : carrierFraction(p.cell());
+    const scalar Sp =
+        riser::suspensionDragFactor(law_, factors, p.d(), muc, ReU, voidage_, eps);
     return forceSuSp(Sp*(u - td.Uc()), Sp);
 }
 
