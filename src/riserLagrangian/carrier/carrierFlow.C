@@ -296,7 +296,26 @@ Foam::carrierFlow::buildMaterialDerivative() const
 
 Foam::tmp<Foam::volVectorField> Foam::carrierFlow::buildVelocityChange() const
 {
-    return U_ - U_.oldTime();
+    tmp<volVectorField> tchange(U_ - U_.oldTime());
+    steadyStep_ = gMax(mag(tchange().primitiveField())()) == 0;
+    return tchange;
+}
+
+
+const Foam::interpolation<Foam::vector>&
+Foam::carrierFlow::interpolator(const cachedField& c) const
+{
+    if (!c.field)
+    {
+        FatalErrorInFunction
+            << "carrier field requested outside cacheFields(true/false)"
+            << abort(FatalError);
+    }
+    if (!c.interp)
+    {
+        c.interp.reset(interpolation<vector>::New(c.scheme, *c.field).ptr());
+    }
+    return *c.interp;
 }
 
 
@@ -319,14 +338,7 @@ void Foam::carrierFlow::cache
         {
             c.field.reset(new volVectorField(name, (this->*build)()));
             // interpolated with the scheme the cloud uses for U
-            c.interp.reset
-            (
-                interpolation<vector>::New
-                (
-                    interpolationSchemes.get<word>(U_.name()),
-                    *c.field
-                ).ptr()
-            );
+            c.scheme = interpolationSchemes.get<word>(U_.name());
         }
     }
     else if (c.users > 0 && --c.users == 0)
@@ -367,17 +379,11 @@ void Foam::carrierFlow::cacheVelocityChange
     const dictionary& schemes
 )
 {
-    const bool built = !velocityChange_.field;
     cache
     (
         velocityChange_, store, schemes,
         "carrierVelocityChange", &carrierFlow::buildVelocityChange
     );
-    if (store && built && velocityChange_.field)
-    {
-        steadyStep_ =
-            gMax(mag(velocityChange_.field->primitiveField())()) == 0;
-    }
 }
 
 

@@ -27,13 +27,7 @@ Foam::vector Foam::carrierFlow::interpolate
     const ParcelType& p
 ) const
 {
-    if (!c.interp)
-    {
-        FatalErrorInFunction
-            << "carrier field requested outside cacheFields(true/false)"
-            << abort(FatalError);
-    }
-    return c.interp->interpolate(p.coordinates(), p.currentTetIndices());
+    return interpolator(c).interpolate(p.coordinates(), p.currentTetIndices());
 }
 
 
@@ -48,7 +42,7 @@ Foam::vector Foam::carrierFlow::velocity
     {
         // U at the particle's time: linear in time over the flow step
         const scalar lag = 1 - p.stepFraction();
-        if (lag == 0 || (velocityChange_.interp && steadyStep_))
+        if (lag == 0 || (velocityChange_.field && steadyStep_))
         {
             return Uc;
         }
