@@ -12,6 +12,8 @@
 #include <cmath>
 #include <cstdio>
 #include <limits>
+#include <map>
+#include <algorithm>
 #include <memory>
 #include <random>
 #include <set>
@@ -346,6 +348,52 @@ TEST(CellList, FindsEveryClosePair)
         EXPECT_GT(brute.size(), 0u);
         EXPECT_LT(visits, long(x.size())*60) << spread;
     }
+}
+
+
+// The periodic pair search against all pairs with the minimum-image
+// distance along z: the same pairs, each once, with i < j and the shift of
+// j's nearest image (independent oracle: a double loop over all pairs).
+TEST(NearPairs, FindsEveryClosePairAcrossPeriodicEnds)
+{
+    std::mt19937 gen(7);
+    const double z0 = -0.3, L = 0.2, cut = 0.01;
+    std::uniform_real_distribution<double> xy(0.0, 0.05), z(z0, z0 + L);
+    std::vector<Vector> x;
+    for (int i = 0; i < 2000; ++i) x.emplace_back(xy(gen), xy(gen), z(gen));
+    x.emplace_back(0.0, 0.0, z0);           // on the lower end
+    x.emplace_back(0.0, 0.0, z0 + L - 1e-4);   // just below the upper end
+    std::map<std::pair<std::size_t, std::size_t>, double> brute, found;
+    for (std::size_t i = 0; i < x.size(); ++i)
+    {
+        for (std::size_t j = i + 1; j < x.size(); ++j)
+        {
+            for (const double dz : {0.0, L, -L})
+            {
+                if ((x[j] + Vector(0, 0, dz) - x[i]).norm() < cut) brute[{i, j}] = dz;
+            }
+        }
+    }
+    NearPairs pairs;
+    pairs.setPeriodic(z0, L);
+    long visits = 0;
+    pairs.forEachPair(x, cut, [&](std::size_t i, std::size_t j, double dz)
+    {
+        ++visits;
+        EXPECT_LT(i, j);
+        if ((x[j] + Vector(0, 0, dz) - x[i]).norm() < cut)
+        {
+            EXPECT_TRUE(found.emplace(std::make_pair(i, j), dz).second) << i << ' ' << j;
+        }
+    });
+    EXPECT_EQ(brute, found);
+    EXPECT_GT(std::count_if(brute.begin(), brute.end(),
+                            [](const auto& p) { return p.second != 0.0; }), 0);
+    // a section not longer than twice the cutoff is refused
+    NearPairs shortSection;
+    shortSection.setPeriodic(z0, 2*cut);
+    EXPECT_THROW(shortSection.forEachPair(x, cut, [](std::size_t, std::size_t, double) {}),
+                 std::invalid_argument);
 }
 
 

@@ -7,7 +7,8 @@
 //   wall's place (contact/hertzMindlin.hpp),
 //   n = (x_j - x_i)/|x_j - x_i|,    delta_n = R_i + R_j - |x_j - x_i|,
 //   U = v_i - v_j + omega_i x (R_i n) + omega_j x (R_j n)
-//       (velocity of sphere i's contact point relative to sphere j's),
+//       (velocity of sphere i's contact point relative to sphere j's:
+//       riser::contactVelocity in contact/contactKernel.hpp),
 //
 // and the force F returned by HertzMindlin::force acts on i, -F on j
 // (Newton's third law: the pair exchanges momentum only). The torques about
@@ -49,14 +50,6 @@ inline PairGeometry pairGeometry(const Vector& xi, double Ri, const Vector& xj, 
     // coincident centres: no direction is preferred; +z is taken
     const Vector n = s > 0.0 ? Vector(d/s) : Vector(0.0, 0.0, 1.0);
     return PairGeometry{(Ri + Rj) - s, n, s};
-}
-
-//- U: velocity of i's contact point relative to j's
-inline Vector pairContactVelocity(const PairGeometry& g,
-                                  const Vector& vi, const Vector& wi, double Ri,
-                                  const Vector& vj, const Vector& wj, double Rj)
-{
-    return vi - vj + wi.cross(Ri*g.normal) + wj.cross(Rj*g.normal);
 }
 
 } // namespace riser

@@ -4,7 +4,8 @@
 // kinds of contact (pairs through contact/pairContact.hpp, walls through
 // riser::Wall). Candidate pairs come from a Verlet list (Verlet, Phys. Rev.
 // 159, 98, 1967): the pairs closer than 2 R_max + skin, found by a cell list
-// (granular/cellList.hpp) and rebuilt when some grain has moved more than
+// (granular/nearPairs.hpp, which meets pairs across the ends of a periodic
+// section too) and rebuilt when some grain has moved more than
 // skin/2 since the last build, so that no pair can come into contact
 // unlisted; a step costs O(N). Each listed pair carries its tangential
 // spring, so a contact's history costs nothing to look up.
@@ -77,8 +78,9 @@
 #ifndef RISERCORE_GRANULAR_GRANULARSYSTEM_HPP
 #define RISERCORE_GRANULAR_GRANULARSYSTEM_HPP
 
+#include "contact/contactKernel.hpp"
 #include "contact/pairContact.hpp"
-#include "granular/cellList.hpp"
+#include "granular/nearPairs.hpp"
 #include "wall/wall.hpp"
 
 #include <algorithm>
@@ -199,8 +201,7 @@ public:
     void setPeriodic(double z0, double length)
     {
         requirePositive("riser::GranularSystem::setPeriodic", "L", length);
-        z0_ = z0;
-        length_ = length;
+        pairs_.setPeriodic(z0, length);
         listValid_ = false;
         forcesValid_ = false;
     }
@@ -462,14 +463,6 @@ private:
                        0.0, Bound::closed, double(grains_.size()), Bound::open);
     }
 
-    //- The kept spring turned into the plane normal to n, length kept
-    static Vector turned(const Vector& s, const Vector& n)
-    {
-        const Vector st = s - s.dot(n)*n;
-        const double l = st.norm();
-        return l > 0.0 ? Vector(st*(s.norm()/l)) : Vector(Vector::Zero());
-    }
-
     //- The half kicks of velocity Verlet; the own acceleration's drag is
     //  taken at the velocity before the first (explicit) and after the
     //  second (implicit): the trapezoid rule over the step, second order
@@ -524,20 +517,22 @@ private:
         bool forceKnown = false;    //!< (when handedOver)
     };
 
+    //- The grain as a side of a contact (its spin only with rotation on)
+    ContactSide side(const Grain& p) const
+    {
+        return ContactSide{p.v, rotation_ ? p.omega : Vector(Vector::Zero()), p.radius};
+    }
+
     //- Velocity of i's contact point relative to j's, for normal n
     Vector pairVelocity(const Grain& a, const Grain& b, const Vector& n) const
     {
-        Vector U = a.v - b.v;
-        if (rotation_) U += a.omega.cross(a.radius*n) + b.omega.cross(b.radius*n);
-        return U;
+        return contactVelocity(side(a), side(b), n);
     }
 
     //- Velocity of the grain's contact point relative to the wall's w
     Vector wallContactVelocity(const Grain& p, const Vector& n, const Vector& w) const
     {
-        Vector U = p.v - w;
-        if (rotation_) U += p.omega.cross(p.radius*n);
-        return U;
+        return contactVelocity(side(p), wallSide(w), n);
     }
 
     //- Complete the contacts handed over with the state of the grains now:
@@ -558,12 +553,11 @@ private:
             if (std::isnan(c.approachSpeed)) c.approachSpeed = U.dot(geo.normal);
             if (!c.forceKnown)
             {
-                const ContactForce f = pairLaw_->force
+                c.force = stepContact
                 (
-                    pairBody(a.radius, a.mass, b.radius, b.mass), geo.overlap,
-                    geo.normal, U, turned(c.spring, geo.normal)
-                );
-                c.force = f.normal + f.tangential;
+                    *pairLaw_, pairBody(a.radius, a.mass, b.radius, b.mass),
+                    geo.overlap, geo.normal, side(a), side(b), c.spring, 0.0
+                ).force;
             }
             c.handedOver = false;
         }
@@ -580,14 +574,13 @@ private:
                 slot.state.wallVelocity = cp.velocity;
                 if (!slot.forceKnown)
                 {
-                    const ContactForce f = wallLaw_->force
+                    const ContactStep f = stepContact
                     (
-                        ContactBody(p.radius, p.mass), cp.overlap, cp.normal,
-                        wallContactVelocity(p, cp.normal, cp.velocity),
-                        turned(slot.spring, cp.normal)
+                        *wallLaw_, ContactBody(p.radius, p.mass), cp.overlap,
+                        cp.normal, side(p), wallSide(cp.velocity), slot.spring, 0.0
                     );
-                    slot.state.force = f.normal + f.tangential;
-                    slot.state.normalForce = f.normal.norm();
+                    slot.state.force = f.force;
+                    slot.state.normalForce = f.law.normal.norm();
                 }
                 slot.handedOver = false;
             }
@@ -626,47 +619,13 @@ private:
         }
         list_.clear();
 
-        // the centres, then the images (+-L) of those within the cutoff of
-        // an end of a periodic section
-        all_.assign(positions_.begin(), positions_.end());
-        original_.resize(n);
-        shift_.assign(n, 0.0);
-        for (std::size_t i = 0; i < n; ++i) original_[i] = i;
-        if (length_ > 0.0)
+        pairs_.forEachPair(positions_, cutoff, [&](std::size_t i, std::size_t j, double dz)
         {
-            requireInRange("riser::GranularSystem", "periodic length L / (2 cutoff)",
-                           length_/(2.0*cutoff), 1.0, Bound::open, 1e300, Bound::closed);
-            for (std::size_t i = 0; i < n; ++i)
-            {
-                const double z = positions_[i].z();
-                for (const double dz : {length_, -length_})
-                {
-                    const bool nearEnd =
-                        dz > 0.0 ? z - z0_ < cutoff : z0_ + length_ - z < cutoff;
-                    if (!nearEnd) continue;
-                    all_.push_back(positions_[i] + Vector(0.0, 0.0, dz));
-                    original_.push_back(i);
-                    shift_.push_back(dz);
-                }
-            }
-        }
-        cells_.build(all_, cutoff);
-        cells_.forEachPair([&](std::size_t a, std::size_t b)
-        {
-            if (a >= n && b >= n) return;  // two images: met through an original
-            if (a >= n) std::swap(a, b);
-            std::size_t i = original_[a], j = original_[b];
-            double dz = shift_[b];
-            // a pair across the ends is met twice (i with j's image, j with
-            // i's): kept once, through the image of the larger index
-            if (i == j || (b >= n && j < i)) return;
-            if (j < i)
-            {
-                std::swap(i, j);
-                dz = -dz;
-            }
             const double reach = grains_[i].radius + grains_[j].radius + skinLength_;
-            if ((all_[b] - all_[a]).squaredNorm() > reach*reach) return;
+            if ((positions_[j] + Vector(0.0, 0.0, dz) - positions_[i]).squaredNorm() > reach*reach)
+            {
+                return;
+            }
             const auto k = kept.find(key(i, j));
             if (k == kept.end())
             {
@@ -742,34 +701,31 @@ private:
                 cand.approachSpeed = std::numeric_limits<double>::quiet_NaN();
                 continue;
             }
-            const Vector U = rotation_
-              ? pairContactVelocity(geo, a.v, a.omega, a.radius, b.v, b.omega, b.radius)
-              : Vector(a.v - b.v);
+            const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
+            const ContactStep c = stepContact
+            (
+                *pairLaw_, body, geo.overlap, geo.normal, side(a), side(b), cand.spring, dt
+            );
             if (!cand.touching) ++pairBegun_;
             if (!cand.touching || std::isnan(cand.approachSpeed))
             {
-                cand.approachSpeed = U.dot(geo.normal);
+                cand.approachSpeed = c.U.dot(geo.normal);
             }
-            const Vector Ut = U - U.dot(geo.normal)*geo.normal;
-            const Vector spring = turned(cand.spring, geo.normal) + dt*Ut;
-            const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
-            const ContactForce c = pairLaw_->force(body, geo.overlap, geo.normal, U, spring);
-            const Vector F = c.normal + c.tangential;
-            force_[cand.i] += F;
-            force_[cand.j] -= F;
+            force_[cand.i] += c.force;
+            force_[cand.j] -= c.force;
             if (rotation_)
             {
-                torque_[cand.i] += (a.radius*geo.normal).cross(c.tangential);
-                torque_[cand.j] += (b.radius*geo.normal).cross(c.tangential);
+                torque_[cand.i] += c.torqueI;
+                torque_[cand.j] += c.torqueJ;
             }
-            tallyPair(cand, -0.5*dt*(workBefore + F.dot(U)));
-            cand.spring = c.springAfter;
+            tallyPair(cand, -0.5*dt*(workBefore + c.power));
+            cand.spring = c.law.springAfter;
             cand.touching = true;
-            cand.force = F;
+            cand.force = c.force;
             cand.normal = geo.normal;
             cand.handedOver = false;
             ++pairsTouching_;
-            elastic_ += energyOf(body, geo.overlap, c.springAfter, *pairLaw_);
+            elastic_ += c.elastic;
             largestPairOverlap_ = std::max
             (
                 largestPairOverlap_, geo.overlap/(2.0*std::min(a.radius, b.radius))
@@ -802,26 +758,25 @@ private:
                     continue;
                 }
                 if (!slot.touching) ++wallBegun_;
-                const Vector U = wallContactVelocity(p, cp.normal, cp.velocity);
-                const Vector Ut = U - U.dot(cp.normal)*cp.normal;
-                const Vector spring = turned(slot.spring, cp.normal) + dt*Ut;
-                const ContactBody body(p.radius, p.mass);
-                const ContactForce c = wallLaw_->force(body, cp.overlap, cp.normal, U, spring);
-                const Vector F = c.normal + c.tangential;
-                force_[i] += F;
-                wallForce_ += F;
-                if (rotation_) torque_[i] += (p.radius*cp.normal).cross(c.tangential);
-                wallEnergy_[i] -= 0.5*dt*(workBefore + F.dot(U));
-                slot.spring = c.springAfter;
+                const ContactStep c = stepContact
+                (
+                    *wallLaw_, ContactBody(p.radius, p.mass), cp.overlap, cp.normal,
+                    side(p), wallSide(cp.velocity), slot.spring, dt
+                );
+                force_[i] += c.force;
+                wallForce_ += c.force;
+                if (rotation_) torque_[i] += c.torqueI;
+                wallEnergy_[i] -= 0.5*dt*(workBefore + c.power);
+                slot.spring = c.law.springAfter;
                 slot.touching = true;
                 slot.state = WallContactState
                 {
-                    true, cp.overlap, c.normal.norm(), F, cp.normal, cp.velocity,
+                    true, cp.overlap, c.law.normal.norm(), c.force, cp.normal, cp.velocity,
                     p.v - cp.velocity
                 };
                 slot.handedOver = false;
                 ++wallsTouching_;
-                elastic_ += energyOf(body, cp.overlap, c.springAfter, *wallLaw_);
+                elastic_ += c.elastic;
             }
         }
         forcesValid_ = true;
@@ -840,14 +795,6 @@ private:
                        0.0, Bound::closed, 4294967295.0, Bound::closed);
     }
 
-    static double energyOf(const ContactBody& b, double delta, const Vector& spring,
-                           const HertzMindlin& law)
-    {
-        const double kt = 8.0*law.equivalentShearModulus()*std::sqrt(b.radius*delta);
-        return 0.4*law.normalStiffness(b)*delta*delta*std::sqrt(delta)
-             + 0.5*kt*spring.squaredNorm();
-    }
-
     std::optional<HertzMindlin> pairLaw_, wallLaw_;
     Vector g_;
     bool rotation_;
@@ -857,16 +804,12 @@ private:
     double skinLength_ = 0.0;
     std::vector<Vector> force_, torque_;
     std::vector<Vector> positions_;     //!< centres at the last list build
-    std::vector<Vector> all_;           //!< the centres and their images
-    std::vector<std::size_t> original_; //!< the grain of each of all_
-    std::vector<double> shift_;         //!< the image's z shift
     std::vector<Candidate> list_;
     //- setPairContact's, in the frame of the lower index
     std::unordered_map<std::uint64_t, PairContactState> preset_;
-    double z0_ = 0.0, length_ = 0.0;    //!< periodic section (length 0: none)
     std::vector<WallSlot> wallSlots_;   //!< per grain and wall
     std::size_t pairsTouching_ = 0, wallsTouching_ = 0;
-    CellList cells_;
+    NearPairs pairs_;                   //!< the pair search (periodic or not)
     Vector wallForce_ = Vector::Zero();
     Vector wallImpulse_ = Vector::Zero();
     //- Per grain: energy dissipated in wall and pair contacts, pair

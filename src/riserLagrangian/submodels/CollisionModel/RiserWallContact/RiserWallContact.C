@@ -8,7 +8,7 @@
 #include "cloudOutputFile.H"
 #include "coreVector.H"
 #include "HistoryParcel.H"
-#include "granular/cellList.hpp"
+#include "granular/nearPairs.hpp"
 #include "granular/granularSystem.hpp"
 #include "RiserCloud.H"
 #include "ListListOps.H"
@@ -364,53 +364,12 @@ void Foam::RiserWallContact<CloudType>::forEachNearPair
     const PairFunction& f
 ) const
 {
-    const std::size_t n = x.size();
-    // the centres, and images shifted by +-L of those within the cutoff of
-    // an end of a periodic section
-    std::vector<riser::Vector> all(x);
-    std::vector<std::size_t> original(n);
-    std::iota(original.begin(), original.end(), std::size_t(0));
-    std::vector<scalar> shift(n, 0);
+    riser::NearPairs pairs;
     if (section_.periodic)
     {
-        const scalar L = section_.length;
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            if (x[i].z() - section_.z0 < cutoff)
-            {
-                all.push_back(x[i] + riser::Vector(0, 0, L));
-                original.push_back(i);
-                shift.push_back(L);
-            }
-            if (section_.z0 + L - x[i].z() < cutoff)
-            {
-                all.push_back(x[i] - riser::Vector(0, 0, L));
-                original.push_back(i);
-                shift.push_back(-L);
-            }
-        }
+        pairs.setPeriodic(section_.z0, section_.length);
     }
-    riser::CellList cells;
-    cells.build(all, cutoff);
-    cells.forEachPair([&](std::size_t a, std::size_t b)
-    {
-        if (a >= n && b >= n)
-        {
-            return;     // two images: the pair is met through its originals
-        }
-        if (a >= n)
-        {
-            std::swap(a, b);
-        }
-        const std::size_t i = original[a], j = original[b];
-        // a pair across the ends appears twice (i with j's image, j with
-        // i's): kept once, with the image of the larger index
-        if (i == j || (b >= n && j < i))
-        {
-            return;
-        }
-        f(i, j, shift[b]);
-    });
+    pairs.forEachPair(x, cutoff, f);
 }
 
 
@@ -675,25 +634,18 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
 }
 
 
-namespace Foam
+template<class CloudType>
+riser::ContactSide Foam::RiserWallContact<CloudType>::contactSide
+(
+    const parcelType& p
+) const
 {
-    //- The tangential spring of a contact turned into the plane normal to n
-    //  (its length kept) and grown by the tangential relative velocity of
-    //  the contact point over dt
-    inline vector advancedSpring
-    (
-        const vector& spring,
-        const vector& n,
-        const vector& U,
-        const scalar dt
-    )
+    return riser::ContactSide
     {
-        const vector inPlane = spring - (spring & n)*n;
-        const scalar magInPlane = mag(inPlane);
-        return
-            (magInPlane > VSMALL ? mag(spring)/magInPlane*inPlane : vector::zero)
-          + (U - (U & n)*n)*dt;
-    }
+        toCore(p.U()),
+        rotation_ ? toCore(p.omega()) : riser::Vector::Zero(),
+        0.5*p.d()
+    };
 }
 
 
@@ -738,44 +690,28 @@ void Foam::RiserWallContact<CloudType>::collidePairs()
         {
             return;
         }
-        const vector n = fromCore(geo.normal);
-        const vector U =
-            rotation_
-          ? fromCore
-            (
-                riser::pairContactVelocity
-                (
-                    geo, toCore(p.U()), toCore(p.omega()), Rp,
-                    toCore(q.U()), toCore(q.omega()), Rq
-                )
-            )
-          : p.U() - q.U();
-
         // the spring in p's frame (n from p to q); q keeps its negative
         vector& spring =
             p.collisionRecords().matchPairRecord(q.origProc(), q.origId()).collisionData();
-        spring = advancedSpring(spring, n, U, dt);
-
         const scalar mp = effectiveMass(p), mq = effectiveMass(q);
-        const riser::ContactForce c =
-            pairLaw_->force
+        const riser::ContactStep c =
+            riser::stepContact
             (
-                riser::pairBody(Rp, mp, Rq, mq),
-                geo.overlap, geo.normal, toCore(U), toCore(spring)
+                *pairLaw_, riser::pairBody(Rp, mp, Rq, mq), geo.overlap, geo.normal,
+                contactSide(p), contactSide(q), toCore(spring), dt
             );
-        spring = fromCore(c.springAfter);
+        spring = fromCore(c.law.springAfter);
         q.collisionRecords().matchPairRecord(p.origProc(), p.origId()).collisionData() =
             -spring;
 
-        const vector F = fromCore(c.normal) + fromCore(c.tangential);
+        const vector F = fromCore(c.force);
         // each parcel divides f by its m_p: the force on m_p + C_A m_f
         p.f() += (p.mass()/mp)*F;
         q.f() -= (q.mass()/mq)*F;
         if (rotation_)
         {
-            const vector Ft = fromCore(c.tangential);
-            p.torque() += (Rp*n) ^ Ft;
-            q.torque() += (Rq*n) ^ Ft;
+            p.torque() += fromCore(c.torqueI);
+            q.torque() += fromCore(c.torqueJ);
         }
         pairOverlapMax_ = max(pairOverlapMax_, geo.overlap/min(p.d(), q.d()));
     });
@@ -1357,7 +1293,14 @@ void Foam::RiserWallContact<CloudType>::collide()
         const vector nPrev = event.found() ? (*event).normal : n;
         const vector UwallPrev = event.found() ? (*event).wallVelocity : Uwall;
         const scalar workBefore =
-            Fprev & (p.U() - UwallPrev + (spin ^ (Rp*nPrev)));
+            Fprev
+          & fromCore
+            (
+                riser::contactVelocity
+                (
+                    contactSide(p), riser::wallSide(toCore(UwallPrev)), toCore(nPrev)
+                )
+            );
 
         if (overlap <= 0)
         {
@@ -1367,37 +1310,32 @@ void Foam::RiserWallContact<CloudType>::collide()
             continue;
         }
 
-        const vector U = p.U() - Uwall + (spin ^ (Rp*n));
-
         // the tangential spring, kept in the current tangent plane
         vector& spring =
             p.collisionRecords().matchWallRecord(0.99*Rp*n, Rp).collisionData();
-        spring = advancedSpring(spring, n, U, dt);
-
-        const riser::ContactForce c =
-            wallLaw_->force
+        const riser::ContactStep c =
+            riser::stepContact
             (
-                riser::ContactBody(Rp, mEff),
-                overlap, toCore(n), toCore(U), toCore(spring)
+                *wallLaw_, riser::ContactBody(Rp, mEff), overlap, toCore(n),
+                contactSide(p), riser::wallSide(cp.velocity), toCore(spring), dt
             );
-        spring = fromCore(c.springAfter);
+        spring = fromCore(c.law.springAfter);
 
-        const vector Fn = fromCore(c.normal);
-        const vector Ft = fromCore(c.tangential);
+        const vector F = fromCore(c.force);
         // the parcel divides f by m_p: the force on m_p + C_A m_f
-        p.f() = (p.mass()/mEff)*(Fn + Ft);
+        p.f() = (p.mass()/mEff)*F;
         if (rotation_)
         {
-            p.torque() = (Rp*n) ^ Ft;
+            p.torque() = fromCore(c.torqueI);
         }
 
-        addWallEnergy(p, -0.5*dt*(workBefore + ((Fn + Ft) & U)));
+        addWallEnergy(p, -0.5*dt*(workBefore + c.power));
         contactEvent& e =
             wallContactGoesOn
             (
-                key, t, dt, overlap, Fn + Ft, mag(Fn), p.U() - Uwall, n, spin
+                key, t, dt, overlap, F, mag(fromCore(c.law.normal)), p.U() - Uwall, n, spin
             );
-        e.force = Fn + Ft;
+        e.force = F;
         e.normal = n;
         e.wallVelocity = Uwall;
     }
