@@ -294,7 +294,9 @@ void Foam::RiserBassetForce<CloudType>::endStep()
     endedTime_ = time.value();
 
     CloudType& cloud = this->owner();
-    typename CloudType::parcelType::trackingData td(cloud);
+    // the carrier at a particle not evaluated in the step: a tracking data
+    // (its interpolations a pass over the mesh) made only if one is met
+    autoPtr<typename CloudType::parcelType::trackingData> td;
     const scalar dt = time.deltaTValue();
 
     for (auto& p : cloud)
@@ -313,8 +315,12 @@ void Foam::RiserBassetForce<CloudType>::endStep()
         else
         {
             // never evaluated in this step: start now, without a slope
-            p.setCellValues(cloud, td);
-            const vector w0 = carrier_.velocity(p, td.Uc()) - p.U();
+            if (!td.valid())
+            {
+                td.reset(new typename CloudType::parcelType::trackingData(cloud));
+            }
+            p.setCellValues(cloud, *td);
+            const vector w0 = carrier_.velocity(p, td->Uc()) - p.U();
             p.history() = kernel_.start(w0, vector(Zero));
         }
         p.UNode() = p.U();
