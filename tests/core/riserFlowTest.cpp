@@ -1,6 +1,7 @@
 // Tests of the analytic oscillating-riser carrier (src/riserCore/carrier).
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "carrier/riserFlow.hpp"
+#include "wall/cylinderWall.hpp"
 
 #include <gtest/gtest.h>
 #include <cmath>
@@ -89,6 +90,29 @@ TEST(RiserFlow, StateEvaluationIsTheTimeEvaluation)
             EXPECT_TRUE(still.vorticity(x, s0) == still.vorticity(x, t));
             EXPECT_TRUE(still.materialDerivative(s0) == still.materialDerivative(x, t));
         }
+    }
+}
+
+// The wall's contact point (its kinematics evaluated once per time) equals
+// the wall's distance, normal and velocity to the last bit, whatever the
+// order of the times asked (repeated, back and forth); on the axis the
+// normal is +x.
+TEST(CylinderWall, ContactPointIsTheWallsOverlapNormalAndVelocity)
+{
+    const CylinderWall wall(0.1, flow.motion());
+    const double r = 0.005;
+    for (double t : {0.0, 0.0123456789, 0.0123456789, 0.21, 0.07, 0.21, 3.3, 0.0})
+    {
+        for (const Vector& x :
+             {Vector(0.01, -0.02, 0.3), Vector(-0.03, 0.04, 1.0), Vector(0.049, 0.0, -2.0)})
+        {
+            const ContactPoint c = wall.contactPoint(x, r, t);
+            EXPECT_TRUE(c.overlap == wall.overlap(x, r, t)) << t;
+            EXPECT_TRUE(c.normal == wall.normal(x, t)) << t;
+            EXPECT_TRUE(c.velocity == wall.velocity(x, t)) << t;
+        }
+        const Vector onAxis(flow.motion().axisPosition(t), 0.0, 0.5);
+        EXPECT_TRUE(wall.contactPoint(onAxis, r, t).normal == Vector(1.0, 0.0, 0.0));
     }
 }
 

@@ -15,6 +15,8 @@
 #include "checks.hpp"
 #include "riser/riserMotion.hpp"
 
+#include <limits>
+
 namespace riser {
 
 class CylinderWall final : public Wall
@@ -62,9 +64,33 @@ public:
         return motion_.velocity(t);
     }
 
+    //- overlap, normal and velocity as above, to the last bit, with the
+    //  riser's kinematics evaluated once per time (the grains of a
+    //  sub-step all ask at one time)
+    ContactPoint contactPoint(const Vector& x, double r, double t) const override
+    {
+        if (!(t == t_))
+        {
+            t_ = t;
+            state_ = motion_.state(t);
+        }
+        const Vector off = motion_.radialOffset(x, state_);
+        const double h = off.norm();
+        return ContactPoint
+        {
+            h + r - radius(),
+            h > 0.0 ? Vector(off/h) : Vector(1.0, 0.0, 0.0),
+            Vector(state_.velocity, 0.0, 0.0)
+        };
+    }
+
 private:
     double D_;
     RiserMotion motion_;
+    //- The time of the kinematics kept, and those (a cache: not for use
+    //  from several threads at once)
+    mutable double t_ = std::numeric_limits<double>::quiet_NaN();
+    mutable RiserMotion::State state_{0.0, 0.0, 0.0};
 };
 
 } // namespace riser

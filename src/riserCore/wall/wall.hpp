@@ -50,8 +50,9 @@ public:
         return r - distance(x, t);
     }
 
-    //- The contact point of a sphere of radius r centred at x
-    ContactPoint contactPoint(const Vector& x, double r, double t) const
+    //- The contact point of a sphere of radius r centred at x (a shape
+    //  may evaluate its motion once for the three)
+    virtual ContactPoint contactPoint(const Vector& x, double r, double t) const
     {
         return ContactPoint{overlap(x, r, t), normal(x, t), velocity(x, t)};
     }
