@@ -186,6 +186,47 @@ TEST(HistoryIntegral, MemoryPerParticle)
     EXPECT_EQ(full.stored(), 1001);
 }
 
+// The states a kernel can continue, as a restart reads them back: those it
+// makes itself (started, pushed through and past the window, released),
+// and no others (a window shortened or lengthened by one, negative steps,
+// steps without a window).
+TEST(HistoryIntegral, DefectNamesStatesTheKernelCannotContinue)
+{
+    for (const HistoryMethod method : {HistoryMethod::windowTail, HistoryMethod::fullHistory})
+    {
+        const HistoryKernel k(method, 1e-3, 5);
+        HistoryState<double> s = k.start(0.1, 0.0);
+        EXPECT_EQ(k.defect(s), "");
+        for (int i = 0; i < 12; ++i)
+        {
+            k.push(s, 0.01*i);
+            EXPECT_EQ(k.defect(s), "") << i;
+        }
+        EXPECT_EQ(k.defect(k.released(0.1, 0.2)), "");
+        HistoryState<double> none = k.start(0.0, 0.0);
+        none.window.clear();
+        EXPECT_EQ(k.defect(none), "");
+        none.steps = -1;
+        EXPECT_EQ(k.defect(none), "");
+        none.steps = 3;
+        EXPECT_NE(k.defect(none), "");
+
+        HistoryState<double> shorter = s;
+        shorter.window.pop_back();
+        EXPECT_NE(k.defect(shorter), "") << "window shortened";
+        HistoryState<double> longer = s;
+        longer.window.push_back(0.0);
+        EXPECT_NE(k.defect(longer), "") << "window lengthened";
+        HistoryState<double> negative = s;
+        negative.steps = -5;
+        EXPECT_NE(k.defect(negative), "");
+        HistoryState<double> more = s;
+        more.steps += 1;
+        // windowTail past its window: any steps >= N hold N + 1 values
+        EXPECT_EQ(k.defect(more) == "", method == HistoryMethod::windowTail);
+    }
+}
+
 TEST(HistoryIntegral, RejectsBadArguments)
 {
     EXPECT_THROW(HistoryIntegral<double>(HistoryMethod::windowTail, 0.01, 1, 0.0, 0.0),

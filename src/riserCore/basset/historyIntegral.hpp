@@ -55,8 +55,11 @@
 
 #include <Eigen/Dense>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
+#include <sstream>
+#include <string>
 #include <vector>
 
 namespace riser {
@@ -199,6 +202,43 @@ public:
         s.head = 0;
         s.tail.fill(w0*0.0);
         return s;
+    }
+
+    //- What keeps s from being a state of this kernel (empty: nothing): a
+    //  history read back at a restart must hold steps >= 0 and the window
+    //  of the method, min(steps, N) + 1 values with windowTail and steps + 1
+    //  with fullHistory; or no window and steps 0 (not started) or -1
+    //  (released, its first step pending)
+    template<class Value>
+    std::string defect(const HistoryState<Value>& s) const
+    {
+        std::ostringstream msg;
+        const long n = long(s.window.size());
+        if (n == 0)
+        {
+            if (s.steps != 0 && s.steps != -1)
+            {
+                msg << "no window values with " << s.steps << " steps (allowed"
+                    << " without a window: 0, not started, or -1, released)";
+            }
+        }
+        else if (s.steps < 0)
+        {
+            msg << s.steps << " steps with " << n << " window values (allowed: steps >= 0)";
+        }
+        else
+        {
+            const long expected = (windowed() ? std::min(s.steps, N_) : s.steps) + 1;
+            if (n != expected)
+            {
+                msg << n << " window values for " << s.steps << " steps, where "
+                    << (windowed() ? "windowTail with a window of " : "fullHistory")
+                    << (windowed() ? std::to_string(N_) + " steps holds min(steps, N) + 1"
+                                   : std::string(" holds steps + 1"))
+                    << " = " << expected;
+            }
+        }
+        return msg.str();
     }
 
     //- Weight of the newest value at the next time: (4/3) sqrt(h)

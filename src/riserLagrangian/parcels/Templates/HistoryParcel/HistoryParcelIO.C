@@ -8,6 +8,9 @@
 #include "IOField.H"
 #include "CompactIOField.H"
 #include "vectorFieldIOField.H"
+#include "OStringStream.H"
+
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -54,6 +57,71 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
 
 template<class ParcelType>
 template<class CloudType>
+void Foam::HistoryParcel<ParcelType>::checkPlaces(const CloudType& c)
+{
+    const polyMesh& mesh = c.pMesh();
+    label i = 0;
+    for (const HistoryParcel<ParcelType>& p : c)
+    {
+        const label celli = p.cell();
+        const label facei = p.tetFace();
+        const label pti = p.tetPt();
+        const barycentric& b = p.coordinates();
+        OStringStream defect;
+        if (celli < 0 || celli >= mesh.nCells())
+        {
+            defect
+                << "cell " << celli << ", not a cell of the mesh (0 to "
+                << mesh.nCells() - 1 << ")";
+        }
+        else if (!mesh.cells()[celli].found(facei))
+        {
+            defect
+                << "tetrahedron face " << facei << ", not a face of its cell "
+                << celli << " (" << mesh.cells()[celli] << ")";
+        }
+        else if (pti < 1 || pti > mesh.faces()[facei].size() - 2)
+        {
+            defect
+                << "tetrahedron point " << pti << " of face " << facei
+                << ", which has " << mesh.faces()[facei].size()
+                << " points (allowed 1 to " << mesh.faces()[facei].size() - 2
+                << ")";
+        }
+        else
+        {
+            // barycentric coordinates in the tetrahedron: each in [0, 1]
+            // and their sum 1, up to the round-off tracking leaves
+            const scalar tol = 1e-6;
+            bool inside = mag(b.a() + b.b() + b.c() + b.d() - 1) <= tol;
+            for (direction k = 0; k < barycentric::nComponents; ++k)
+            {
+                inside = inside && std::isfinite(b[k]) && b[k] >= -tol && b[k] <= 1 + tol;
+            }
+            if (!inside)
+            {
+                defect
+                    << "barycentric coordinates " << b << " (allowed: each"
+                    << " in [0, 1] and their sum 1, within 1e-6)";
+            }
+        }
+        if (!defect.str().empty())
+        {
+            const IOobject io(c.fieldIOobject("coordinates", IOobject::NO_READ));
+            FatalErrorInFunction
+                << "Cloud " << c.name() << " at time " << c.time().timeName()
+                << ": particle " << i << " of " << io.path() << " (the"
+                << " coordinates or positions file) holds " << defect.str().c_str()
+                << "; it has no place in the mesh of this case. Restore the"
+                << " file as written for this mesh." << exit(FatalError);
+        }
+        ++i;
+    }
+}
+
+
+template<class ParcelType>
+template<class CloudType>
 void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 {
     const bool valid = c.size();
@@ -92,6 +160,8 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
                 << exit(FatalError);
         }
     }
+
+    checkPlaces(c);
 
     ParcelType::readFields(c);
 

@@ -8,6 +8,8 @@
 #include "particleForceEvaluation.H"
 #include "IOField.H"
 
+#include <cmath>
+
 // * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
 
 template<class CloudType>
@@ -121,6 +123,49 @@ void Foam::RiserBassetForce<CloudType>::checkStoredHistories()
 
 
 template<class CloudType>
+void Foam::RiserBassetForce<CloudType>::checkReadHistories() const
+{
+    const CloudType& cloud = this->owner();
+    auto finite = [](const vector& v)
+    {
+        return std::isfinite(v.x()) && std::isfinite(v.y()) && std::isfinite(v.z());
+    };
+    label i = 0;
+    for (const auto& p : cloud)
+    {
+        const auto& h = p.history();
+        std::string defect = kernel_.defect(h);
+        if (defect.empty())
+        {
+            bool allFinite = finite(h.slip0);
+            for (const vector& g : h.window) allFinite = allFinite && finite(g);
+            for (const vector& s : h.tail) allFinite = allFinite && finite(s);
+            if (!allFinite)
+            {
+                defect = "a value that is not a finite number";
+            }
+        }
+        if (!defect.empty())
+        {
+            FatalErrorInFunction
+                << typeName << ": the Basset history of particle " << i
+                << " (origProcId " << p.origProc() << ", origId "
+                << p.origId() << ") read from " << unchecked_
+                << " (historySteps, historySlip0, historyWindow, historyTail)"
+                << " holds " << defect.c_str() << ", which the "
+                << (kernel_.windowed() ? "windowTail" : "fullHistory")
+                << " history of this run cannot continue." << nl
+                << "Restore the fields as written, or restart without the"
+                << " histories (remove the history* fields from that folder:"
+                << " each particle's history then starts at the next step)."
+                << exit(FatalError);
+        }
+        ++i;
+    }
+}
+
+
+template<class CloudType>
 Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
 (
     const typename CloudType::parcelType& p,
@@ -216,7 +261,8 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
     ),
     kernel_(readKernel(this->coeffs(), mesh.time().deltaTValue())),
     stepOpen_(false),
-    endedTime_(-GREAT)
+    endedTime_(-GREAT),
+    unchecked_(owner.fieldIOobject("historySteps", IOobject::NO_READ).path())
 {
     checkStoredHistories();
 }
@@ -234,7 +280,8 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
     frequency_(f.frequency_),
     kernel_(f.kernel_),
     stepOpen_(f.stepOpen_),
-    endedTime_(f.endedTime_)
+    endedTime_(f.endedTime_),
+    unchecked_(f.unchecked_)
 {}
 
 
@@ -254,6 +301,11 @@ void Foam::RiserBassetForce<CloudType>::startStep()
 {
     const Time& time = this->mesh().time();
     stepOpen_ = true;
+    if (!unchecked_.empty())
+    {
+        checkReadHistories();
+        unchecked_.clear();
+    }
 
     const scalar h = kernel_.step();
     if (mag(time.deltaTValue() - h) > 1e-10*h)
