@@ -146,6 +146,19 @@ Foam::RiserInletInjection<CloudType>::RiserInletInjection
                 << exit(FatalIOError);
         }
     }
+    if (!this->source_->carrierVelocity())
+    {
+        const vector U0 = this->source_->velocity(Zero, owner.db().time().value());
+        if (U0.z() < 0)
+        {
+            FatalIOErrorInFunction(this->coeffDict())
+                << "entry 'U0' = " << U0 << ": riserInlet releases the ores"
+                << " into the riser at the inlet disc, so U0's z component"
+                << " must be >= 0 (allowed: [0, 100] m/s); with U0_z < 0"
+                << " they would leave through the inlet" << nl
+                << exit(FatalIOError);
+        }
+    }
     z0_ = boundBox(mesh.points(), true).min().z();
     const scalar D = this->carrier_.riser().diameter();
     this->source_->checkDiameters

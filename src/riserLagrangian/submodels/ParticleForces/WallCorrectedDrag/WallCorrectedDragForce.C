@@ -32,17 +32,24 @@ template<class CloudType>
 Foam::scalar
 Foam::WallCorrectedDragForce<CloudType>::carrierFraction(const label celli) const
 {
-    if (!this->mesh().template foundObject<volScalarField>("alphac"))
+    // riserCoupledFoam's alphac; DPMFoam's and MPPICFoam's alpha.<phase>,
+    // the phase of the carrier's velocity (U.water: alpha.water)
+    const word phase(this->owner().U().group());
+    const word grouped(IOobject::groupName("alpha", phase.empty() ? word("<phase>") : phase));
+    for (const word& name : {word("alphac"), grouped})
     {
-        FatalIOErrorInFunction(this->coeffs())
-            << "entry 'voidage' of " << this->coeffs().name() << " needs the"
-            << " carrier's volume fraction alphac, which riserCoupledFoam"
-            << " computes; this solver computes none (one-way: the carrier"
-            << " is not displaced by the particles). Use 'voidage none;'"
-            << " or leave it out" << exit(FatalIOError);
+        if (this->mesh().template foundObject<volScalarField>(name))
+        {
+            return this->mesh().template lookupObject<volScalarField>(name)[celli];
+        }
     }
-    return
-        this->mesh().template lookupObject<volScalarField>("alphac")[celli];
+    FatalIOErrorInFunction(this->coeffs())
+        << "entry 'voidage' of " << this->coeffs().name() << " needs the"
+        << " carrier's volume fraction: alphac (riserCoupledFoam) or "
+        << grouped << " (DPMFoam, MPPICFoam); this solver has neither"
+        << " (one-way: the carrier is not displaced by the particles). Use"
+        << " 'voidage none;' or leave it out" << exit(FatalIOError);
+    return 1;
 }
 
 
