@@ -19,6 +19,7 @@ Description
 
 makeRiserForces(basicKinematicCollidingCloud);
 makeRiserInjectionModels(basicKinematicCollidingCloud);
+makeRiserCloudOnlyRefusals(basicKinematicCollidingCloud);
 makeRiserCollisionSubmodels(basicKinematicCollidingCloud);
 
 // ************************************************************************* //

@@ -18,5 +18,6 @@ Description
 
 makeRiserForces(basicKinematicMPPICCloud);
 makeRiserInjectionModels(basicKinematicMPPICCloud);
+makeRiserCloudOnlyRefusals(basicKinematicMPPICCloud);
 
 // ************************************************************************* //

@@ -19,5 +19,6 @@ Description
 
 makeRiserForces(basicKinematicCloud);
 makeRiserInjectionModels(basicKinematicCloud);
+makeRiserCloudOnlyRefusals(basicKinematicCloud);
 
 // ************************************************************************* //
