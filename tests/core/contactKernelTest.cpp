@@ -135,5 +135,5 @@ TEST(ContactKernel, PairTorquesAndPowerFollowTheirDefinitions)
     const ContactStep apart = stepContact(hm, pairBody(Ri, mi, Rj, mj), -1e-6, g.normal, i, j, s0, 1e-6);
     EXPECT_EQ(apart.force, Vector::Zero());
     EXPECT_EQ(apart.law.springAfter, Vector::Zero());
-    EXPECT_EQ(apart.elastic, 0.0);
+    EXPECT_EQ(apart.power, 0.0);
 }

@@ -21,7 +21,8 @@
 //   P     = F.U, the power of the contact force on the relative motion
 //           (the dissipation of a step is -dt/2 (P_before + P_after), the
 //           trapezoid rule, summed by the caller)
-//   E_el  = 2/5 k_n delta_n^(5/2) + 1/2 k_t |s|^2 (energy in the springs)
+//   E_el  = 2/5 k_n delta_n^(5/2) + 1/2 k_t |s|^2 (energy in the springs,
+//           elasticEnergy, for a caller that tallies it)
 //
 // The spring kept after the step is the law's (after the Coulomb cap). dt = 0
 // evaluates the force of a contact handed over with its spring, without
@@ -69,7 +70,8 @@ inline Vector turnedSpring(const Vector& s, const Vector& n)
     return l > 0.0 ? Vector(st*(s.norm()/l)) : Vector(Vector::Zero());
 }
 
-//- Energy held in the springs of a contact at overlap delta with spring s
+//- Energy held in the springs of a contact at overlap delta > 0 with
+//  spring s
 inline double elasticEnergy(const HertzMindlin& law, const ContactBody& b,
                             double delta, const Vector& s)
 {
@@ -86,7 +88,6 @@ struct ContactStep
     Vector torqueJ;     //!< about j's centre
     Vector U;           //!< i's contact point relative to j's
     double power;       //!< F.U
-    double elastic;     //!< energy in the springs after the step
 };
 
 //- One contact over a step dt: sides i and j with overlap along n (from i
@@ -105,7 +106,7 @@ inline ContactStep stepContact(const HertzMindlin& law, const ContactBody& body,
         // apart: no force, no spring kept
         c.law = ContactForce{Vector::Zero(), Vector::Zero(), Vector::Zero(), false};
         c.force = c.torqueI = c.torqueJ = Vector::Zero();
-        c.power = c.elastic = 0.0;
+        c.power = 0.0;
         return c;
     }
     const Vector Ut = c.U - c.U.dot(n)*n;
@@ -114,7 +115,6 @@ inline ContactStep stepContact(const HertzMindlin& law, const ContactBody& body,
     c.torqueI = (i.radius*n).cross(c.law.tangential);
     c.torqueJ = (j.radius*n).cross(c.law.tangential);
     c.power = c.force.dot(c.U);
-    c.elastic = elasticEnergy(law, body, overlap, c.law.springAfter);
     return c;
 }
 

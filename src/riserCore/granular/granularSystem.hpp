@@ -725,7 +725,7 @@ private:
             cand.normal = geo.normal;
             cand.handedOver = false;
             ++pairsTouching_;
-            elastic_ += c.elastic;
+            elastic_ += riser::elasticEnergy(*pairLaw_, body, geo.overlap, c.law.springAfter);
             largestPairOverlap_ = std::max
             (
                 largestPairOverlap_, geo.overlap/(2.0*std::min(a.radius, b.radius))
@@ -758,9 +758,10 @@ private:
                     continue;
                 }
                 if (!slot.touching) ++wallBegun_;
+                const ContactBody body(p.radius, p.mass);
                 const ContactStep c = stepContact
                 (
-                    *wallLaw_, ContactBody(p.radius, p.mass), cp.overlap, cp.normal,
+                    *wallLaw_, body, cp.overlap, cp.normal,
                     side(p), wallSide(cp.velocity), slot.spring, dt
                 );
                 force_[i] += c.force;
@@ -776,7 +777,7 @@ private:
                 };
                 slot.handedOver = false;
                 ++wallsTouching_;
-                elastic_ += c.elastic;
+                elastic_ += riser::elasticEnergy(*wallLaw_, body, cp.overlap, c.law.springAfter);
             }
         }
         forcesValid_ = true;
