@@ -34,9 +34,16 @@ along), from the solver's CPU time between steps 10 and 40 (the log's
 ExecutionTime) and its peak resident memory (/usr/bin/time), without
 contact and with wall and pair contact.
 
-usage: oreCloud.py [--quick] [--scaling] --build DIR --results DIR
+With --processors instead: the wall time of the same scene (C_v = 0.05,
+1e3 and 1e4 ores, 0.1 s; quick: 1e3, 0.02 s) serially and on 2 processors
+(the section split along z), alternated three times, and their ratio in
+each repetition; without contact, with wall and pair contact, and with the
+ores alone at the wall sub-stepped without the mesh too.
+
+usage: oreCloud.py [--quick] [--scaling | --processors] --build DIR --results DIR
 writes <results>/oreCloud.json and <results>/oreCloud.md (--scaling:
-oreScaling.json and oreScaling.md)
+oreScaling.json and oreScaling.md; --processors: oreProcessors.json and
+oreProcessors.md)
 License: GPL-3.0-or-later
 """
 import argparse
@@ -46,12 +53,14 @@ import math
 import os
 import re
 import resource
+import shutil
 import subprocess
 import time
 
 import numpy as np
 
 from riserfoam import cases
+from riserfoam import foamfields as ff
 
 # variant: (collision model, pairs)
 PAIRS = "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }"
@@ -67,39 +76,29 @@ VARIANTS = {
 SCENES = {"A0.2_f4": (0.2, 4.0), "A2_f0.4": (2.0, 0.4)}
 
 
-def set_entry(path, entry, value):
-    subprocess.run(["foamDictionary", "-set", value, "-entry", entry, path],
-                   check=True, stdout=subprocess.DEVNULL)
-
-
-def remove_entry(path, entry):
-    subprocess.run(["foamDictionary", "-remove", "-entry", entry, path],
-                   check=True, stdout=subprocess.DEVNULL)
-
-
 def make(case, end, A, f, collision, pairs, alone="tracked", L=1.0, n=12, nz=None, Cv=0.0667):
     cases.copy_tutorial("riser/oscillatingContact", case)
     cases.riser_mesh(case, D=0.1, L=L, n=n, nz=nz)
     props = os.path.join(case, "constant", "riserProperties")
-    set_entry(props, "A", repr(A))
-    set_entry(props, "f", repr(f))
+    ff.set_nested(props, "A", repr(A))
+    ff.set_nested(props, "f", repr(f))
     control = os.path.join(case, "system", "controlDict")
     for entry, value in (("deltaT", "1e-4"), ("endTime", repr(end)), ("writeInterval", repr(end))):
-        set_entry(control, entry, value)
-    remove_entry(control, "functions")
+        ff.set_nested(control, entry, value)
+    ff.remove_entry(control, "functions")
     cloud = os.path.join(case, "constant", "kinematicCloudProperties")
-    set_entry(cloud, "cloudFunctions", "{}")
-    set_entry(cloud, "subModels/injectionModels",
+    ff.set_nested(cloud, "cloudFunctions", "{}")
+    ff.set_nested(cloud, "subModels/injectionModels",
               "{ ores { type riserFill; SOI 0; massTotal 0; parcelBasisType fixed; nParticle 1;"
               " solidsFraction %g; seed 1; velocity carrier;"
               " sizeDistribution { type fixedValue; fixedValueDistribution { value 0.01; } } } }"
               % Cv)
-    set_entry(cloud, "subModels/riserWallContactCoeffs/stepsPerContact", "10")
-    set_entry(cloud, "subModels/collisionModel", collision)
+    ff.set_nested(cloud, "subModels/riserWallContactCoeffs/stepsPerContact", "10")
+    ff.set_nested(cloud, "subModels/collisionModel", collision)
     if pairs:
-        set_entry(cloud, "subModels/riserWallContactCoeffs/pairs", pairs)
+        ff.set_nested(cloud, "subModels/riserWallContactCoeffs/pairs", pairs)
     if alone:
-        set_entry(cloud, "subModels/riserWallContactCoeffs/aloneAtWall", alone)
+        ff.set_nested(cloud, "subModels/riserWallContactCoeffs/aloneAtWall", alone)
 
 
 def scaling(args, work):
@@ -162,6 +161,66 @@ def scaling(args, work):
                          a["outside_pipe_reports"] + b["outside_pipe_reports"]))
 
 
+def processors(args, work):
+    """wall time on 2 processors against serial (see above)"""
+    Vp, area, Cv = math.pi / 6 * 0.01 ** 3, math.pi / 4 * 0.1 ** 2, 0.05
+    rows = []
+    end = 0.02 if args.quick else 0.1
+    for N in ((1000,) if args.quick else (1000, 10000)):
+        L = N * Vp / (Cv * area)
+        for name in ("none", "wall+pairs", "wall+pairs, alone meshFree"):
+            collision, pairs, alone = VARIANTS[name]
+            base = os.path.join(work, "processors", "N%d_%s" % (N, re.sub(r"[^A-Za-z0-9]+", "_", name)))
+            make(base, end, 0.2, 4.0, collision, pairs, alone,
+                 L=L, n=6, nz=max(4, int(round(L / 0.02))), Cv=Cv)
+            row = {"N": N, "variant": name, "serial_s": [], "np2_s": []}
+            for repeat in range(3):
+                # the two runs alternated, each from a fresh copy
+                for key, np in (("serial_s", 1), ("np2_s", 2)):
+                    case = base + "_np%d" % np
+                    shutil.rmtree(case, ignore_errors=True)
+                    shutil.copytree(base, case)
+                    command = ["riserParcelFoam", "-case", case]
+                    if np > 1:
+                        ff.write_dictionary(os.path.join(case, "system/decomposeParDict"),
+                                            "numberOfSubdomains 2;\nmethod simple;\n"
+                                            "simpleCoeffs { n (1 1 2); delta 0.001; }\n")
+                        cases.run(["decomposePar", "-case", case], os.path.join(case, "log.decomposePar"))
+                        command = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2",
+                                   "riserParcelFoam", "-parallel", "-case", case]
+                    t0 = time.perf_counter()
+                    text = cases.run(command, os.path.join(case, "log.riserParcelFoam"))
+                    row[key].append(time.perf_counter() - t0)
+                    clustered = [int(c) for c in
+                                 re.findall(r"(\d+) particle\(s\) in clusters or alone", text)] or [0]
+                    row["max_clustered"] = max(clustered)
+                    row["outside_pipe_reports"] = text.count("outside the pipe")
+            row["speedup"] = [a / b for a, b in zip(row["serial_s"], row["np2_s"])]
+            rows.append(row)
+            print(row)
+    result = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+              "load": open("/proc/loadavg").read().split()[:3], "simulated_s": end, "rows": rows}
+    with open(os.path.join(args.results, "oreProcessors.json"), "w") as out:
+        json.dump(result, out, indent=1)
+    with open(os.path.join(args.results, "oreProcessors.md"), "w") as out:
+        out.write("# Ores on 2 processors against serial (benchmarks/oreCloud.py --processors%s)\n\n"
+                  % (" --quick" if args.quick else ""))
+        out.write("Measured %s, load average %s. C_v = 0.05, A = 0.2 m, f = 4 Hz, dt = 1e-4 s, "
+                  "%g s simulated, the section's length grown with the number of ores and split "
+                  "along z (simple decomposition); wall time of the solver, serial and on 2 "
+                  "processors alternated three times from fresh copies, and their ratio "
+                  "(speed-up) in each repetition.\n\n"
+                  % (result["date"], " ".join(result["load"]), end))
+        out.write("| ores | contact | serial wall s | 2 processors wall s | speed-up | "
+                  "most clustered | outside-pipe reports |\n|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            out.write("| %d | %s | %s | %s | %s | %d | %d |\n"
+                      % (r["N"], r["variant"], " ".join("%.1f" % t for t in r["serial_s"]),
+                         " ".join("%.1f" % t for t in r["np2_s"]),
+                         " ".join("%.2f" % x for x in r["speedup"]), r["max_clustered"],
+                         r["outside_pipe_reports"]))
+
+
 def simulated(log):
     """the simulated time of a log: its last time less the first step's start"""
     times = [float(t) for t in re.findall(r"^Time = (\S+)", log, flags=re.M)]
@@ -218,6 +277,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--scaling", action="store_true")
+    ap.add_argument("--processors", action="store_true")
     ap.add_argument("--build", required=True)
     ap.add_argument("--results", required=True)
     args = ap.parse_args()
@@ -226,6 +286,9 @@ def main():
     os.makedirs(args.results, exist_ok=True)
     if args.scaling:
         scaling(args, work)
+        return
+    if args.processors:
+        processors(args, work)
         return
     rows = {}
     for scene, (A, f) in SCENES.items():

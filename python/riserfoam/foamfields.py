@@ -4,13 +4,14 @@ Reading: the vector and scalar lists OpenFOAM writes (a lagrangian field,
 the internal field or a patch's value of a volume field), as N(...) or as
 the uniform N{value}; a top-level number entry of a dictionary. Writing: a FoamFile header, a whole file, a
 volVectorField whose values a function of the position gives. Editing: a
-top-level entry of a dictionary, a regular-expression edit, a block
-replaced by another.
+top-level entry of a dictionary, any entry through foamDictionary (set,
+remove), a regular-expression edit, a block replaced by another.
 
 SPDX-License-Identifier: GPL-3.0-or-later
 """
 import os
 import re
+import subprocess
 
 _NUMBER = r"[-+0-9.eE]+"
 _VECTOR = re.compile(r"\((%s)\s+(%s)\s+(%s)\)" % (_NUMBER, _NUMBER, _NUMBER))
@@ -157,6 +158,20 @@ def edit(path, pattern, replacement):
 def set_entry(path, name, value):
     """Set the top-level entry 'name value;' of a dictionary (it must be there)."""
     edit(path, r"^%s\s.*;" % re.escape(name), "%-15s %s;" % (name, value))
+
+
+def set_nested(path, entry, value):
+    """Set any entry of a dictionary, a/b/c for nested ones, to the text
+    value (OpenFOAM's foamDictionary -set: added when it is not there)."""
+    subprocess.run(["foamDictionary", "-set", value, "-entry", entry, path],
+                   check=True, stdout=subprocess.DEVNULL)
+
+
+def remove_entry(path, entry):
+    """Remove an entry of a dictionary, a/b/c for nested ones (OpenFOAM's
+    foamDictionary -remove)."""
+    subprocess.run(["foamDictionary", "-remove", "-entry", entry, path],
+                   check=True, stdout=subprocess.DEVNULL)
 
 
 def replace_block(path, name, body):

@@ -397,6 +397,23 @@ TEST(NearPairs, FindsEveryClosePairAcrossPeriodicEnds)
 }
 
 
+// A processor may hold none of a group's grains: an engine without grains
+// in a periodic section steps (no pairs, no error; its cutoff is then 0).
+TEST(GranularSystem, StepsWithoutGrainsInAPeriodicSection)
+{
+    const HertzMindlin l = law(glass, glass, 0.76, 0.3);
+    GranularSystem empty(l, l, Vector(0, 0, -9.81), false);
+    empty.setPeriodic(0.0, 0.1);
+    EXPECT_NO_THROW(for (int k = 0; k < 3; ++k) empty.step(1e-5));
+    EXPECT_EQ(empty.pairContacts(), 0u);
+    NearPairs pairs;
+    pairs.setPeriodic(0.0, 0.1);
+    long visits = 0;
+    pairs.forEachPair(std::vector<Vector>(), 0.0, [&](std::size_t, std::size_t, double) { ++visits; });
+    EXPECT_EQ(visits, 0);
+}
+
+
 // A grain's own acceleration is integrated exactly by velocity Verlet when
 // it is constant: x = x0 + v0 T + a T^2/2, v = v0 + a T (to round-off,
 // relative 1e-12 over 1000 steps).

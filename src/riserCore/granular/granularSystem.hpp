@@ -343,6 +343,17 @@ public:
     //- Advance every grain by dt
     void step(double dt)
     {
+        step(dt, [](std::vector<Grain>&) {});
+    }
+
+    //- Advance every grain by dt; afterMove(grains) is called when the
+    //  grains have moved (positions at the step's end, velocities and
+    //  spins at its middle), before their forces are evaluated: a caller
+    //  that holds copies of grains stepped elsewhere (a processor's halo)
+    //  sets their state there
+    template<class AfterMove>
+    void step(double dt, const AfterMove& afterMove)
+    {
         requirePositive("riser::GranularSystem::step", "dt", dt);
         for (const Grain& p : grains_)
         {
@@ -361,6 +372,7 @@ public:
         kick(0.5*dt, false);
         for (Grain& p : grains_) p.x += dt*p.v;
         t_ += dt;
+        afterMove(grains_);
         computeForces(dt);
         kick(0.5*dt, true);
     }

@@ -41,6 +41,7 @@ public:
     void forEachPair(const std::vector<Vector>& x, double cutoff, PairFunction&& f)
     {
         const std::size_t n = x.size();
+        if (n == 0) return;
         all_.assign(x.begin(), x.end());
         original_.resize(n);
         shift_.assign(n, 0.0);

@@ -506,6 +506,8 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     // from each pair's own speeds would miss a resting particle struck by
     // a neighbour and left to overlap the next
     const scalar reach = 4*uMax*dt;
+    reach_ = reach;
+    radiusMax_ = rMax;
     forEachNearPair(x, 2*rMax + reach + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
     {
         const label p = i, q = j;
@@ -779,9 +781,10 @@ riser::PairContactState Foam::RiserWallContact<CloudType>::pairHandOver
 
 
 template<class CloudType>
-typename Foam::RiserWallContact<CloudType>::contactEvent&
+typename Foam::RiserWallContact<CloudType>::wallContactEvent&
 Foam::RiserWallContact<CloudType>::wallContactGoesOn
 (
+    wallContactEvents& events,
     const labelPair& key,
     const scalar t,
     const scalar h,
@@ -793,21 +796,22 @@ Foam::RiserWallContact<CloudType>::wallContactGoesOn
     const vector& spin
 )
 {
-    auto iter = events_.find(key);
+    auto iter = events.find(key);
     if (!iter.found())
     {
-        events_.insert
-        (
-            key,
-            contactEvent
-            {
-                t - h, overlap, normalForce, Urel, Urel & n, spin,
-                vector::zero, n, vector::zero, h*F
-            }
-        );
-        return events_[key];
+        wallContactEvent e;
+        e.start = t - h;
+        e.overlapMax = overlap;
+        e.normalForceMax = normalForce;
+        e.velocityIn = Urel;
+        e.normalSpeedIn = Urel & n;
+        e.spinIn = spin;
+        e.normal = n;
+        e.impulse = h*F;
+        events.insert(key, e);
+        return events[key];
     }
-    contactEvent& e = *iter;
+    wallContactEvent& e = *iter;
     e.overlapMax = max(e.overlapMax, overlap);
     e.normalForceMax = max(e.normalForceMax, normalForce);
     e.impulse += h*F;
@@ -818,7 +822,8 @@ Foam::RiserWallContact<CloudType>::wallContactGoesOn
 template<class CloudType>
 void Foam::RiserWallContact<CloudType>::wallContactEnds
 (
-    parcelType& p,
+    wallContactEvents& events,
+    contactTrace& trace,
     const labelPair& key,
     const scalar t,
     const vector& Uout,
@@ -826,12 +831,12 @@ void Foam::RiserWallContact<CloudType>::wallContactEnds
     const vector& spin
 )
 {
-    auto iter = events_.find(key);
+    auto iter = events.find(key);
     if (!iter.found())
     {
         return;
     }
-    const contactEvent& e = *iter;
+    const wallContactEvent& e = *iter;
     contactFile()
         << key.first() << ' ' << key.second() << ' '
         << e.start << ' ' << t << ' ' << t - e.start << ' '
@@ -844,8 +849,163 @@ void Foam::RiserWallContact<CloudType>::wallContactEnds
         << e.normalSpeedIn << ' ' << -(Uout & n) << ' '
         << e.impulse.x() << ' ' << e.impulse.y() << ' ' << e.impulse.z()
         << endl;
-    recordWallContact(p, e.overlapMax, e.normalSpeedIn);
-    events_.erase(iter);
+    trace.recordWallContact(e.overlapMax, e.normalSpeedIn);
+    events.erase(iter);
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::grainStates
+(
+    const UList<parcelType*>& parcels,
+    const UList<linearisedAcceleration>& fluidAcceleration,
+    const UList<vector>& startOffset,
+    List<grainState>& grains,
+    List<grainPairSpring>& springs
+) const
+{
+    grains.setSize(parcels.size());
+    DynamicList<grainPairSpring> pairSprings;
+    forAll(parcels, i)
+    {
+        const parcelType& p = *parcels[i];
+        grainState& m = grains[i];
+        m = grainState();
+        m.key = labelPair(p.origProc(), p.origId());
+        m.processor = Pstream::myProcNo();
+        m.x = p.position();
+        m.xStart = m.x + startOffset[i];
+        m.U = p.U();
+        m.omega = rotation_ ? p.omega() : vector::zero;
+        m.a = fluidAcceleration[i].a0;
+        m.drag = fluidAcceleration[i].rate;
+        m.Uc = fluidAcceleration[i].Uc;
+        m.R = 0.5*p.d();
+        m.mEff = effectiveMass(p);
+        m.mP = p.mass();
+        m.inertia = p.momentOfInertia();
+        m.F = p.f()*(m.mEff/p.mass());
+        m.T = rotation_ ? p.torque() : vector::zero;
+        for (const auto& record : p.collisionRecords().wallRecords())
+        {
+            m.wallSpring = record.collisionData();
+            m.touchingWall = true;
+        }
+        for (const auto& record : p.collisionRecords().pairRecords())
+        {
+            grainPairSpring s;
+            s.key = m.key;
+            s.other = labelPair(record.origProcOfOther(), record.origIdOfOther());
+            s.spring = record.collisionData();
+            pairSprings.append(s);
+        }
+    }
+    springs.transfer(pairSprings);
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::haloOf
+(
+    const UList<grainState>& all,
+    labelList& local,
+    labelListList& send,
+    labelListList& recv
+) const
+{
+    const label me = Pstream::myProcNo();
+    const label nProcs = Pstream::nProcs();
+    std::vector<bool> inHalo(all.size(), false);
+    // (processor, own particle in its halo), each possibly many times
+    std::vector<std::pair<label, label>> sends;
+    if (pairLaw_.valid() && nProcs > 1)
+    {
+        // the pairs of particles of two processors that may touch within
+        // the step: each is in the other's halo (the same test as the
+        // clusters': every processor finds the same pairs)
+        std::vector<riser::Vector> x(all.size());
+        forAll(all, k)
+        {
+            x[k] = toCore(all[k].x);
+        }
+        forEachNearPair(x, 2*radiusMax_ + reach_ + SMALL, [&](std::size_t a, std::size_t b, scalar dz)
+        {
+            const grainState& p = all[a];
+            const grainState& q = all[b];
+            if (p.processor == q.processor || (p.processor != me && q.processor != me))
+            {
+                return;
+            }
+            const scalar gap =
+                (x[b] + riser::Vector(0, 0, dz) - x[a]).norm() - (p.R + q.R);
+            if (gap > reach_)
+            {
+                return;
+            }
+            if (p.processor == me)
+            {
+                inHalo[b] = true;
+                sends.emplace_back(q.processor, label(a));
+            }
+            else
+            {
+                inHalo[a] = true;
+                sends.emplace_back(p.processor, label(b));
+            }
+        });
+    }
+    std::sort(sends.begin(), sends.end());
+    sends.erase(std::unique(sends.begin(), sends.end()), sends.end());
+    DynamicList<label> grains;
+    forAll(all, k)
+    {
+        if (all[k].processor == me || inHalo[k])
+        {
+            grains.append(k);
+        }
+    }
+    // in the order of their positions (by z, then x, then y), which does
+    // not depend on the decomposition (the keys do: each processor numbers
+    // the particles it injects), so that the contact forces are summed in
+    // the same order in a serial and a parallel run, and a pair across
+    // processors is evaluated alike on both
+    std::sort
+    (
+        grains.begin(), grains.end(),
+        [&all](label a, label b)
+        {
+            const vector& p = all[a].x;
+            const vector& q = all[b].x;
+            return
+                p.z() < q.z()
+             || (p.z() == q.z() && (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y())));
+        }
+    );
+    local.transfer(grains);
+    labelList localOf(all.size(), -1);
+    forAll(local, i)
+    {
+        localOf[local[i]] = i;
+    }
+    send.setSize(nProcs);
+    recv.setSize(nProcs);
+    List<DynamicList<label>> s(nProcs), r(nProcs);
+    for (const std::pair<label, label>& ps : sends)
+    {
+        s[ps.first].append(localOf[ps.second]);
+    }
+    forAll(all, k)
+    {
+        if (inHalo[k])
+        {
+            r[all[k].processor].append(localOf[k]);
+        }
+    }
+    for (label proc = 0; proc < nProcs; ++proc)
+    {
+        send[proc].transfer(s[proc]);
+        recv[proc].transfer(r[proc]);
+    }
 }
 
 
@@ -863,88 +1023,35 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     const riser::Wall& wall = carrier_.wall();
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
-    const label nOwn = parcels.size();
+    const label me = Pstream::myProcNo();
     const bool walls = wallLaw_.valid();
 
-    // this processor's particles at the step's start: state, springs
-    // (pair records flattened: owner, other, spring) and contact forces
-    List<labelPair> keys(nOwn);
-    List<vector> x(nOwn), xStart(nOwn), U(nOwn), omega(nOwn), a(nOwn), Uc(nOwn),
-        F(nOwn), T(nOwn), wallSpring(nOwn);
-    List<scalar> R(nOwn), mEff(nOwn), mP(nOwn), inertia(nOwn), drag(nOwn);
-    labelList touchingWall(nOwn, 0);
-    DynamicList<labelPair> recordOwner, recordOther;
-    DynamicList<vector> recordSpring;
-    forAll(parcels, i)
+    // the group's particles of all processors at the step's start
+    List<grainState> all;
+    List<grainPairSpring> springs;
     {
-        const parcelType& p = *parcels[i];
-        keys[i] = labelPair(p.origProc(), p.origId());
-        x[i] = p.position();
-        xStart[i] = x[i] + startOffset[i];
-        U[i] = p.U();
-        omega[i] = rotation_ ? p.omega() : vector::zero;
-        a[i] = fluidAcceleration[i].a0;
-        drag[i] = fluidAcceleration[i].rate;
-        Uc[i] = fluidAcceleration[i].Uc;
-        R[i] = 0.5*p.d();
-        mEff[i] = effectiveMass(p);
-        mP[i] = p.mass();
-        inertia[i] = p.momentOfInertia();
-        F[i] = p.f()*(mEff[i]/p.mass());
-        T[i] = rotation_ ? p.torque() : vector::zero;
-        wallSpring[i] = vector::zero;
-        for (const auto& record : p.collisionRecords().wallRecords())
-        {
-            wallSpring[i] = record.collisionData();
-            touchingWall[i] = 1;
-        }
-        for (const auto& record : p.collisionRecords().pairRecords())
-        {
-            recordOwner.append(keys[i]);
-            recordOther.append
-            (
-                labelPair(record.origProcOfOther(), record.origIdOfOther())
-            );
-            recordSpring.append(record.collisionData());
-        }
+        List<grainState> own;
+        List<grainPairSpring> ownSprings;
+        grainStates(parcels, fluidAcceleration, startOffset, own, ownSprings);
+        all = gatheredFromAll(own);
+        springs = gatheredFromAll(ownSprings);
     }
+    // the explicit drag of the sub-steps stays stable: drag h <= 1 (the
+    // same on every processor: all particles' rates)
+    label nSub = max(nSubNeeded, label(1));
+    for (const grainState& m : all)
+    {
+        nSub = max(nSub, label(ceil(m.drag*dt)));
+    }
+    const scalar h = dt/nSub;
 
-    // the clusters of this group on all processors: every processor steps
-    // all of them and keeps what is its own. They enter the engine in the
-    // order of their positions (by z, then x, then y), which does not
-    // depend on the decomposition (their keys do: each processor numbers
-    // the particles it injects), so that the contact forces are summed in
-    // the same order in a serial and a parallel run.
-    const List<labelPair> allKeys = gatheredFromAll(keys);
-    const List<vector> allX = gatheredFromAll(x), allU = gatheredFromAll(U);
-    const List<vector> allXStart = gatheredFromAll(xStart);
-    std::vector<label> order(allX.size());
-    std::iota(order.begin(), order.end(), label(0));
-    std::sort
-    (
-        order.begin(), order.end(),
-        [&allX](label a, label b)
-        {
-            const vector& p = allX[a];
-            const vector& q = allX[b];
-            return
-                p.z() < q.z()
-             || (p.z() == q.z() && (p.x() < q.x() || (p.x() == q.x() && p.y() < q.y())));
-        }
-    );
-    const List<vector> allOmega = gatheredFromAll(omega), allA = gatheredFromAll(a);
-    const List<vector> allUc = gatheredFromAll(Uc);
-    const List<scalar> allDrag = gatheredFromAll(drag);
-    const List<vector> allF = gatheredFromAll(F), allT = gatheredFromAll(T);
-    const List<vector> allWallSpring = gatheredFromAll(wallSpring);
-    const List<scalar> allR = gatheredFromAll(R), allM = gatheredFromAll(mEff);
-    const List<scalar> allInertia = gatheredFromAll(inertia);
-    const List<scalar> allMp = gatheredFromAll(mP);
-    const labelList allTouchingWall = gatheredFromAll(touchingWall);
-    const List<labelPair> allRecordOwner = gatheredFromAll(recordOwner);
-    const List<labelPair> allRecordOther = gatheredFromAll(recordOther);
-    const List<vector> allRecordSpring = gatheredFromAll(recordSpring);
-    const std::size_t n = order.size();
+    // this processor steps its own particles and its halo's copies of the
+    // others' near them; after each move the copies are given the state
+    // their processors moved them to
+    labelList local;
+    labelListList send, recv;
+    haloOf(all, local, send, recv);
+    const label n = local.size();
 
     auto optionalLaw = [](const autoPtr<riser::HertzMindlin>& law)
     {
@@ -967,106 +1074,148 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         grains.setPeriodic(section_.z0, section_.length);
     }
     grains.setTime(t0);
-    // the same grains without contacts: their free motion under the fluid
+    // the own grains without contacts: their free motion under the fluid
     // acceleration, integrated alike (a grain that touches nothing moves
     // exactly as its free one)
     riser::GranularSystem free(std::nullopt, std::nullopt, riser::Vector::Zero(), rotation_);
-    // the explicit drag of the sub-steps stays stable: drag h <= 1 (the same
-    // on every processor: the gathered rates)
-    label nSub = max(nSubNeeded, label(1));
-    for (const scalar rate : allDrag)
-    {
-        nSub = max(nSub, label(ceil(rate*dt)));
-    }
-    const scalar h = dt/nSub;
     HashTable<label, labelPair, labelPair::Hash<>> grainOf(2*n);
     std::vector<riser::Vector> grainF(n), grainT(n);
-    for (std::size_t i = 0; i < n; ++i)
+    // the own grains: grain index, parcel (by the order of parcels: all
+    // holds this processor's in that order) and free grain
+    DynamicList<label> ownGrain(parcels.size());
+    DynamicList<parcelType*> ownParcel(parcels.size());
+    // (all holds the processors' particles one processor after the
+    // other, this processor's in the order of parcels)
+    label firstOwn = 0;
+    while (firstOwn < all.size() && all[firstOwn].processor != me)
     {
-        const label k = order[i];
-        grainOf.insert(allKeys[k], label(i));
-        riser::Grain g
-        {
-            toCore(allXStart[k]), toCore(allU[k]), toCore(allOmega[k]), allR[k], allM[k]
-        };
-        g.accel = toCore(allA[k]);
-        g.drag = allDrag[k];
-        g.carrierVelocity = toCore(allUc[k]);
-        g.inertia = allInertia[k];
-        grains.addGrain(g);
-        free.addGrain(g);
-        grainF[i] = toCore(allF[k]);
-        grainT[i] = toCore(allT[k]);
+        ++firstOwn;
     }
-    for (std::size_t i = 0; i < n; ++i)
+    labelList ownIndex(n, -1);
+    forAll(local, i)
     {
-        if (walls && allTouchingWall[order[i]])
+        const grainState& m = all[local[i]];
+        grainOf.insert(m.key, i);
+        riser::Grain g{toCore(m.xStart), toCore(m.U), toCore(m.omega), m.R, m.mEff};
+        g.accel = toCore(m.a);
+        g.drag = m.drag;
+        g.carrierVelocity = toCore(m.Uc);
+        g.inertia = m.inertia;
+        grains.addGrain(g);
+        grainF[i] = toCore(m.F);
+        grainT[i] = toCore(m.T);
+        if (m.processor == me)
+        {
+            free.addGrain(g);
+            ownIndex[i] = ownGrain.size();
+            ownGrain.append(i);
+            ownParcel.append(parcels[local[i] - firstOwn]);
+        }
+    }
+    forAll(local, i)
+    {
+        const grainState& m = all[local[i]];
+        if (walls && m.touchingWall)
         {
             // with the force of its last evaluation, when this processor
             // kept it (its own particles: for their dissipation tally)
-            const label k = order[i];
-            const auto e = events_.cfind(allKeys[k]);
+            const auto e = events_.cfind(m.key);
             if (e.found())
             {
                 grains.setWallContact
                 (
-                    i, 0, toCore(allWallSpring[k]), toCore((*e).force)
+                    i, 0, toCore(m.wallSpring), toCore((*e).force)
                 );
             }
             else
             {
-                grains.setWallSpring(i, 0, toCore(allWallSpring[k]));
+                grains.setWallSpring(i, 0, toCore(m.wallSpring));
             }
         }
     }
-    forAll(allRecordOwner, r)
+    for (const grainPairSpring& s : springs)
     {
         // each pair once, from the record of the particle first in order
         // (the spring in its frame), with what pairEvents_ kept of it
-        const auto i = grainOf.cfind(allRecordOwner[r]);
-        const auto j = grainOf.cfind(allRecordOther[r]);
+        const auto i = grainOf.cfind(s.key);
+        const auto j = grainOf.cfind(s.other);
         if (i.found() && j.found() && *i < *j)
         {
-            grains.setPairContact
-            (
-                *i, *j,
-                pairHandOver
-                (
-                    allRecordOwner[r], allRecordOther[r], allRecordSpring[r]
-                )
-            );
+            grains.setPairContact(*i, *j, pairHandOver(s.key, s.other, s.spring));
         }
     }
     grains.setContactForces(grainF, grainT);
 
-    // this processor's particles among the grains; their wall contacts in
-    // progress, as collide() keeps them
-    std::vector<label> ownGrain(nOwn);
-    std::vector<bool> inContact(nOwn);
-    forAll(parcels, i)
+    // the halo's copies given their processors' state after each move
+    auto exchangeHalo = [&](std::vector<riser::Grain>& g)
     {
-        ownGrain[i] = grainOf[keys[i]];
-        inContact[i] = events_.found(keys[i]);
-    }
+        if (!Pstream::parRun())
+        {
+            return;
+        }
+        PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
+        forAll(send, proc)
+        {
+            if (send[proc].size())
+            {
+                List<vector> state(3*send[proc].size());
+                forAll(send[proc], s)
+                {
+                    const riser::Grain& p = g[send[proc][s]];
+                    state[3*s] = fromCore(p.x);
+                    state[3*s + 1] = fromCore(p.v);
+                    state[3*s + 2] = fromCore(p.omega);
+                }
+                UOPstream os(proc, buffers);
+                os << state;
+            }
+        }
+        buffers.finishedSends();
+        forAll(recv, proc)
+        {
+            if (recv[proc].size())
+            {
+                UIPstream is(proc, buffers);
+                List<vector> state(is);
+                forAll(recv[proc], r)
+                {
+                    riser::Grain& p = g[recv[proc][r]];
+                    p.x = toCore(state[3*r]);
+                    p.v = toCore(state[3*r + 1]);
+                    p.omega = toCore(state[3*r + 2]);
+                }
+            }
+        }
+    };
 
+    // the sub-steps; the own particles' wall contacts in progress, as
+    // collide() keeps them
+    std::vector<bool> inContact(ownGrain.size());
+    forAll(ownGrain, i)
+    {
+        inContact[i] = events_.found(all[local[ownGrain[i]]].key);
+    }
+    List<contactTrace> trace(ownGrain.size());
     for (label k = 1; k <= nSub; ++k)
     {
-        grains.step(h);
+        grains.step(h, exchangeHalo);
         free.step(h);
         const scalar t = t0 + k*h;
         pairOverlapMax_ = max(pairOverlapMax_, grains.largestPairOverlap());
-        forAll(parcels, i)
+        forAll(ownGrain, i)
         {
             if (!walls)
             {
                 break;
             }
-            const riser::WallContactState& c = grains.wallContact(ownGrain[i], 0);
+            const label gi = ownGrain[i];
+            const riser::WallContactState& c = grains.wallContact(gi, 0);
             if (!c.touching && !inContact[i])
             {
                 continue;
             }
-            const riser::Grain& g = grains.grains()[ownGrain[i]];
+            const labelPair& key = all[local[gi]].key;
+            const riser::Grain& g = grains.grains()[gi];
             const riser::ContactPoint cp = wall.contactPoint(g.x, g.radius, t);
             const vector nw = fromCore(cp.normal);
             // (the velocity the force was evaluated with, as a tracked
@@ -1075,60 +1224,130 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
             const vector spin = fromCore(g.omega);
             if (c.touching)
             {
-                checkInside(keys[i], c.overlap, g.radius, t);
+                checkInside(key, c.overlap, g.radius, t);
                 wallContactGoesOn
                 (
-                    keys[i], t, h, c.overlap, fromCore(c.force), c.normalForce,
-                    Urel, nw, spin
+                    events_, key, t, h, c.overlap, fromCore(c.force),
+                    c.normalForce, Urel, nw, spin
                 );
                 inContact[i] = true;
             }
             else
             {
-                wallContactEnds(*parcels[i], keys[i], t, Urel, nw, spin);
+                wallContactEnds(events_, trace[i], key, t, Urel, nw, spin);
                 inContact[i] = false;
             }
         }
     }
 
-    // The contact trace of the flow step (contactTrace.H): each grain's
-    // dissipation in wall and pair contacts, and its completed pair
-    // contacts, to its parcel; and what the next flow step is handed of the
-    // contacts in progress: the walls' last forces (in events_), the pairs'
-    // approach speeds and last forces (pairEvents_, renewed for the pairs
-    // of these particles)
+    // The contact trace of the flow step (contactTrace.H) of each own
+    // particle, its wall contact's last force, springs; and what the
+    // contacts added to its free motion
+    List<labelPair> ownKeys(ownGrain.size());
+    List<vector> ownSteps(6*ownGrain.size());
+    forAll(ownGrain, i)
     {
-        forAll(parcels, i)
+        const label gi = ownGrain[i];
+        const grainState& m = all[local[gi]];
+        parcelType& p = *ownParcel[i];
+        const riser::Grain& g = grains.grains()[gi];
+        const riser::Grain& gFree = free.grains()[i];
+        trace[i].wallEnergy = grains.wallEnergy(gi);
+        trace[i].recordPairContacts
+        (
+            label(grains.pairContactsCompleted(gi)), grains.pairImpactSpeed(gi)
+        );
+        trace[i].pairEnergy = grains.pairEnergy(gi);
+        addContactTrace(p, trace[i]);
+        p.collisionRecords() =
+            typename std::decay<decltype(p.collisionRecords())>::type();
+        if (walls)
         {
-            const label gi = ownGrain[i];
-            addWallEnergy(*parcels[i], grains.wallEnergy(gi));
-            recordPairContacts
-            (
-                *parcels[i], label(grains.pairContactsCompleted(gi)),
-                grains.pairImpactSpeed(gi), grains.pairEnergy(gi)
-            );
-            if (!walls)
-            {
-                continue;
-            }
             const riser::WallContactState& c = grains.wallContact(gi, 0);
-            auto e = events_.find(keys[i]);
+            auto e = events_.find(m.key);
             if (c.touching && e.found())
             {
                 (*e).force = fromCore(c.force);
                 (*e).normal = fromCore(c.normal);
                 (*e).wallVelocity = fromCore(c.wallVelocity);
             }
+            if (c.touching)
+            {
+                const riser::ContactPoint cp =
+                    wall.contactPoint(g.x, g.radius, time.value());
+                p.collisionRecords().matchWallRecord
+                (
+                    0.99*g.radius*fromCore(cp.normal), g.radius
+                ).collisionData() = fromCore(grains.wallSpring(gi, 0));
+            }
+        }
+        // the track from the particle's position, x + U dt, is given what
+        // puts it where the engine left it (up to the track's own share of
+        // the fluid's a dt^2/2: RiserCloud); the velocity gets the
+        // contacts' change on top of the fluid forces' own
+        contactStep c;
+        c.x = fromCore(g.x);
+        c.dx = c.x - m.x - dt*m.U;
+        c.dU = fromCore(riser::Vector(g.v - gFree.v));
+        c.dL = m.inertia*fromCore(riser::Vector(g.omega - gFree.omega));
+        c.f = (m.mP/m.mEff)*fromCore(grains.contactForce(gi));
+        c.torque = rotation_ ? fromCore(grains.contactTorque(gi)) : vector::zero;
+        ownKeys[i] = m.key;
+        ownSteps[6*i] = c.x;
+        ownSteps[6*i + 1] = c.dx;
+        ownSteps[6*i + 2] = c.dU;
+        ownSteps[6*i + 3] = c.dL;
+        ownSteps[6*i + 4] = c.f;
+        ownSteps[6*i + 5] = c.torque;
+    }
+
+    // the pair contacts in progress: the own particles' springs; and kept
+    // by every processor for the next step (a pair's particles may be
+    // stepped elsewhere then), each pair from the processor of its first
+    // grain, those of the group renewed, in the frame of the lower
+    // (origProc, origId)
+    DynamicList<grainPairContact> ownPairs;
+    label acrossProcessors = 0;
+    grains.forEachPairContactState
+    (
+        [&](std::size_t i, std::size_t j, const riser::PairContactState& state)
+        {
+            const grainState& a = all[local[i]];
+            const grainState& b = all[local[j]];
+            if (a.processor == me)
+            {
+                ownParcel[ownIndex[i]]->collisionRecords()
+                    .matchPairRecord(b.key.first(), b.key.second())
+                    .collisionData() = fromCore(state.spring);
+                grainPairContact c;
+                c.first = a.key;
+                c.second = b.key;
+                c.spring = fromCore(state.spring);
+                c.force = fromCore(state.force);
+                c.approachSpeed = state.approachSpeed;
+                ownPairs.append(c);
+            }
+            if (b.processor == me)
+            {
+                ownParcel[ownIndex[j]]->collisionRecords()
+                    .matchPairRecord(a.key.first(), a.key.second())
+                    .collisionData() = -fromCore(state.spring);
+            }
+            acrossProcessors += a.processor != b.processor && a.processor == me;
+        }
+    );
+    const List<grainPairContact> pairs = gatheredFromAll(List<grainPairContact>(ownPairs));
+    {
+        HashSet<labelPair, labelPair::Hash<>> group(2*all.size());
+        for (const grainState& m : all)
+        {
+            group.insert(m.key);
         }
         DynamicList<pairKey> ended;
         forAllConstIters(pairEvents_, iter)
         {
             const pairKey& k = iter.key();
-            if
-            (
-                grainOf.found(labelPair(k[0], k[1]))
-             || grainOf.found(labelPair(k[2], k[3]))
-            )
+            if (group.found(labelPair(k[0], k[1])) || group.found(labelPair(k[2], k[3])))
             {
                 ended.append(k);
             }
@@ -1137,104 +1356,44 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         {
             pairEvents_.erase(k);
         }
-        grains.forEachPairContactState
-        (
-            [&](std::size_t i, std::size_t j, const riser::PairContactState& c)
-            {
-                // in the frame of the lower (origProc, origId); every
-                // processor keeps the pairs of all (it steps them all)
-                const labelPair& ki = allKeys[order[i]];
-                const labelPair& kj = allKeys[order[j]];
-                const bool iLower = ki < kj;
-                pairEvents_.set
-                (
-                    makePairKey(ki, kj),
-                    pairContactEvent
-                    {
-                        c.approachSpeed,
-                        fromCore(iLower ? c.force : riser::Vector(-c.force))
-                    }
-                );
-            }
-        );
-    }
-
-
-    // what the contacts added to the free motion of every particle of the
-    // group (a particle may change processor in its move through the mesh),
-    // and the state handed back to this processor's particles
-    contactSteps result(2*n);
-    for (std::size_t i = 0; i < n; ++i)
-    {
-        const label k = order[i];
-        const riser::Grain& g = grains.grains()[i];
-        const riser::Grain& gFree = free.grains()[i];
-        contactStep c;
-        // the track from the particle's position, x + U dt, is given what
-        // puts it where the engine left it (up to the track's own share of
-        // the fluid's a dt^2/2: above); the velocity gets the contacts'
-        // change on top of the fluid forces' own
-        c.x = fromCore(g.x);
-        c.dx = c.x - allX[k] - dt*allU[k];
-        c.dU = fromCore(riser::Vector(g.v - gFree.v));
-        c.dL = allInertia[k]*fromCore(riser::Vector(g.omega - gFree.omega));
-        c.f = (allMp[k]/allM[k])*fromCore(grains.contactForce(i));
-        c.torque = rotation_ ? fromCore(grains.contactTorque(i)) : vector::zero;
-        result.insert(allKeys[k], c);
-    }
-    HashTable<parcelType*, labelPair, labelPair::Hash<>> ownParcel(2*nOwn);
-    forAll(parcels, i)
-    {
-        parcelType& p = *parcels[i];
-        ownParcel.insert(keys[i], &p);
-        const label gi = ownGrain[i];
-        const riser::Grain& g = grains.grains()[gi];
-        p.collisionRecords() =
-            typename std::decay<decltype(p.collisionRecords())>::type();
-        if (walls && grains.wallContact(gi, 0).touching)
+        for (const grainPairContact& c : pairs)
         {
-            const riser::ContactPoint cp =
-                wall.contactPoint(g.x, g.radius, time.value());
-            p.collisionRecords().matchWallRecord
+            const bool firstLower = c.first < c.second;
+            pairEvents_.set
             (
-                0.99*g.radius*fromCore(cp.normal), g.radius
-            ).collisionData() = fromCore(grains.wallSpring(gi, 0));
+                makePairKey(c.first, c.second),
+                pairContactEvent{c.approachSpeed, firstLower ? c.force : -c.force}
+            );
         }
-    }
-    label acrossProcessors = 0;
-    grains.forEachPairContact
-    (
-        [&](std::size_t i, std::size_t j, const riser::Vector& spring)
-        {
-            const labelPair& ki = allKeys[order[i]];
-            const labelPair& kj = allKeys[order[j]];
-            const auto p = ownParcel.cfind(ki);
-            if (p.found())
-            {
-                (*p)->collisionRecords().matchPairRecord(kj.first(), kj.second())
-                    .collisionData() = fromCore(spring);
-            }
-            const auto q = ownParcel.cfind(kj);
-            if (q.found())
-            {
-                (*q)->collisionRecords().matchPairRecord(ki.first(), ki.second())
-                    .collisionData() = -fromCore(spring);
-            }
-            acrossProcessors += (p.found() != q.found());
-        }
-    );
-    if (Pstream::parRun())
-    {
-        // (each such pair is counted by both of its processors)
-        Info<< "    riserWallContact: " << grains.pairContacts()
-            << " pair(s) in contact, "
-            << returnReduce(acrossProcessors, sumOp<label>())/2
-            << " across processor boundaries" << endl;
     }
     for (parcelType* p : parcels)
     {
         // as after collide(): kept, marked not accessed
         p->collisionRecords().update();
+    }
+    if (Pstream::parRun())
+    {
+        Info<< "    riserWallContact: " << pairs.size()
+            << " pair(s) in contact, "
+            << returnReduce(acrossProcessors, sumOp<label>())
+            << " across processor boundaries" << endl;
+    }
+
+    // what the contacts added to the free motion of every particle of the
+    // group (a particle may change processor in its move through the mesh)
+    const List<labelPair> keys = gatheredFromAll(ownKeys);
+    const List<vector> steps = gatheredFromAll(ownSteps);
+    contactSteps result(2*keys.size());
+    forAll(keys, i)
+    {
+        contactStep c;
+        c.x = steps[6*i];
+        c.dx = steps[6*i + 1];
+        c.dU = steps[6*i + 2];
+        c.dL = steps[6*i + 3];
+        c.f = steps[6*i + 4];
+        c.torque = steps[6*i + 5];
+        result.insert(keys[i], c);
     }
     return result;
 }
@@ -1304,8 +1463,10 @@ void Foam::RiserWallContact<CloudType>::collide()
 
         if (overlap <= 0)
         {
-            addWallEnergy(p, -0.5*dt*workBefore);
-            wallContactEnds(p, key, t, p.U() - Uwall, n, spin);
+            contactTrace trace;
+            trace.wallEnergy = -0.5*dt*workBefore;
+            wallContactEnds(events_, trace, key, t, p.U() - Uwall, n, spin);
+            addContactTrace(p, trace);
             // no record accessed: update() below drops the tangential spring
             continue;
         }
@@ -1329,11 +1490,13 @@ void Foam::RiserWallContact<CloudType>::collide()
             p.torque() = fromCore(c.torqueI);
         }
 
-        addWallEnergy(p, -0.5*dt*(workBefore + c.power));
-        contactEvent& e =
+        contactTrace trace;
+        trace.wallEnergy = -0.5*dt*(workBefore + c.power);
+        addContactTrace(p, trace);
+        wallContactEvent& e =
             wallContactGoesOn
             (
-                key, t, dt, overlap, F, mag(fromCore(c.law.normal)), p.U() - Uwall, n, spin
+                events_, key, t, dt, overlap, F, mag(fromCore(c.law.normal)), p.U() - Uwall, n, spin
             );
         e.force = F;
         e.normal = n;
