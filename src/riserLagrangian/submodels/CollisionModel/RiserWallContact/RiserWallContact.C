@@ -12,6 +12,8 @@
 #include "granular/granularSystem.hpp"
 #include "RiserCloud.H"
 #include "ListListOps.H"
+#include "UIPstream.H"
+#include "UOPstream.H"
 
 #include <algorithm>
 #include <cmath>
@@ -1051,6 +1053,13 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     labelList local;
     labelListList send, recv;
     haloOf(all, local, send, recv);
+    bool halo = false;
+    for (const labelList& s : send)
+    {
+        halo = halo || s.size();
+    }
+    // (no processor holds a halo: no exchange)
+    halo = returnReduce(halo, orOp<bool>());
     const label n = local.size();
 
     auto optionalLaw = [](const autoPtr<riser::HertzMindlin>& law)
@@ -1147,43 +1156,62 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     grains.setContactForces(grainF, grainT);
 
     // the halo's copies given their processors' state after each move
+    // (each processor knows what it sends and receives: messages of known
+    // sizes, posted at once, without a collective)
+    List<List<vector>> outgoing(send.size()), incoming(recv.size());
+    forAll(send, proc)
+    {
+        outgoing[proc].setSize(3*send[proc].size());
+        incoming[proc].setSize(3*recv[proc].size());
+    }
     auto exchangeHalo = [&](std::vector<riser::Grain>& g)
     {
-        if (!Pstream::parRun())
+        if (!halo)
         {
             return;
         }
-        PstreamBuffers buffers(Pstream::commsTypes::nonBlocking);
-        forAll(send, proc)
-        {
-            if (send[proc].size())
-            {
-                List<vector> state(3*send[proc].size());
-                forAll(send[proc], s)
-                {
-                    const riser::Grain& p = g[send[proc][s]];
-                    state[3*s] = fromCore(p.x);
-                    state[3*s + 1] = fromCore(p.v);
-                    state[3*s + 2] = fromCore(p.omega);
-                }
-                UOPstream os(proc, buffers);
-                os << state;
-            }
-        }
-        buffers.finishedSends();
+        const label requests = UPstream::nRequests();
         forAll(recv, proc)
         {
             if (recv[proc].size())
             {
-                UIPstream is(proc, buffers);
-                List<vector> state(is);
-                forAll(recv[proc], r)
-                {
-                    riser::Grain& p = g[recv[proc][r]];
-                    p.x = toCore(state[3*r]);
-                    p.v = toCore(state[3*r + 1]);
-                    p.omega = toCore(state[3*r + 2]);
-                }
+                UIPstream::read
+                (
+                    Pstream::commsTypes::nonBlocking, proc,
+                    reinterpret_cast<char*>(incoming[proc].data()),
+                    incoming[proc].byteSize()
+                );
+            }
+        }
+        forAll(send, proc)
+        {
+            List<vector>& state = outgoing[proc];
+            forAll(send[proc], s)
+            {
+                const riser::Grain& p = g[send[proc][s]];
+                state[3*s] = fromCore(p.x);
+                state[3*s + 1] = fromCore(p.v);
+                state[3*s + 2] = fromCore(p.omega);
+            }
+            if (state.size())
+            {
+                UOPstream::write
+                (
+                    Pstream::commsTypes::nonBlocking, proc,
+                    reinterpret_cast<const char*>(state.cdata()), state.byteSize()
+                );
+            }
+        }
+        UPstream::waitRequests(requests);
+        forAll(recv, proc)
+        {
+            const List<vector>& state = incoming[proc];
+            forAll(recv[proc], r)
+            {
+                riser::Grain& p = g[recv[proc][r]];
+                p.x = toCore(state[3*r]);
+                p.v = toCore(state[3*r + 1]);
+                p.omega = toCore(state[3*r + 2]);
             }
         }
     };
