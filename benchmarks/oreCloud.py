@@ -101,6 +101,19 @@ def make(case, end, A, f, collision, pairs, alone="tracked", L=1.0, n=12, nz=Non
         ff.set_nested(cloud, "subModels/riserWallContactCoeffs/aloneAtWall", alone)
 
 
+def stamped(**entries):
+    """a result: the entries with the date and the load average"""
+    return dict(date=datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
+                load=open("/proc/loadavg").read().split()[:3], **entries)
+
+
+def saved(args, stem, result):
+    """<results>/<stem>.json written; <results>/<stem>.md opened for the table"""
+    with open(os.path.join(args.results, stem + ".json"), "w") as out:
+        json.dump(result, out, indent=1)
+    return open(os.path.join(args.results, stem + ".md"), "w")
+
+
 def scaling(args, work):
     """cost per particle-step and memory per particle against N (see above)"""
     Vp, area, Cv = math.pi / 6 * 0.01 ** 3, math.pi / 4 * 0.1 ** 2, 0.05
@@ -134,11 +147,8 @@ def scaling(args, work):
         for name in ("none", "wall+pairs"):
             b[name]["bytes_per_particle"] = (1024 * 1024 * (b[name]["peak_rss_MB"] - a[name]["peak_rss_MB"])
                                              / (b["N"] - a["N"]))
-    result = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
-              "load": open("/proc/loadavg").read().split()[:3], "rows": rows}
-    with open(os.path.join(args.results, "oreScaling.json"), "w") as out:
-        json.dump(result, out, indent=1)
-    with open(os.path.join(args.results, "oreScaling.md"), "w") as out:
+    result = stamped(rows=rows)
+    with saved(args, "oreScaling", result) as out:
         out.write("# Ores with wall and pair contact against their number "
                   "(benchmarks/oreCloud.py --scaling%s)\n\n" % (" --quick" if args.quick else ""))
         out.write("Measured %s, load average %s. C_v = 0.05, A = 0.2 m, f = 4 Hz, dt = 1e-4 s, "
@@ -202,11 +212,8 @@ def processors(args, work):
             row["speedup"] = [a / b for a, b in zip(row["serial_s"], row["np2_s"])]
             rows.append(row)
             print(row)
-    result = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
-              "load": open("/proc/loadavg").read().split()[:3], "rows": rows}
-    with open(os.path.join(args.results, "oreProcessors.json"), "w") as out:
-        json.dump(result, out, indent=1)
-    with open(os.path.join(args.results, "oreProcessors.md"), "w") as out:
+    result = stamped(rows=rows)
+    with saved(args, "oreProcessors", result) as out:
         out.write("# Ores on 2 processors against serial (benchmarks/oreCloud.py --processors%s)\n\n"
                   % (" --quick" if args.quick else ""))
         out.write("Measured %s, load average %s. C_v = 0.05, A = 0.2 m, f = 4 Hz, dt = 1e-4 s, "
@@ -306,12 +313,8 @@ def main():
             r["ratio_to_none"] = r["cpu_s"]/rows[scene]["none"]["cpu_s"] if name != "none" else 1.0
             rows[scene][name] = r
             print("%-8s %-10s %s" % (scene, name, r))
-    result = {"date": datetime.datetime.now(datetime.timezone.utc).strftime("%Y-%m-%d %H:%M UTC"),
-              "quick": args.quick, "simulated_s": end, "load": open("/proc/loadavg").read().split()[:3],
-              "scenes": rows}
-    with open(os.path.join(args.results, "oreCloud.json"), "w") as out:
-        json.dump(result, out, indent=1)
-    with open(os.path.join(args.results, "oreCloud.md"), "w") as out:
+    result = stamped(quick=args.quick, simulated_s=end, scenes=rows)
+    with saved(args, "oreCloud", result) as out:
         out.write("# 1,000 shaken ores in riserParcelFoam (benchmarks/oreCloud.py%s)\n\n"
                   % (" --quick" if args.quick else ""))
         out.write("Measured %s, %g s simulated, load average %s; CPU seconds of the solver, "
