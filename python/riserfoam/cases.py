@@ -581,6 +581,42 @@ def flagship_contact():
 
 
 
+def dense_shaken_section(case, end, write_interval=None, alone_at_wall="meshFree"):
+    """The dense shaken periodic section of the contact tests, made in case
+    (nothing run): the flagship tutorial on a D = L = 0.1 m section
+    (riserMesh -n 6, cyclic ends) filled at C_v = 0.15 with 10 mm ores
+    (riserFill: 225), A = 0.2 m, f = 4 Hz from the largest acceleration
+    (phi0 = pi/2); soft ores and wall (E = 1e7 Pa: a contact lasts a few
+    flow steps, so that contacts are in progress at the steps' ends),
+    pairs (e_n 0.5, e_t 0.5, mu 0.3), every contact sub-stepped without
+    the mesh (aloneAtWall meshFree; or an ore alone at the wall moved
+    through the mesh in each sub-cycle: tracked), 10 sub-steps a contact
+    time; dt =
+    1e-4 s to end, written every write_interval (end by default) in ascii
+    with 17 digits, no function objects."""
+    copy_tutorial("riser/oscillatingContact", case)
+    riser_mesh(case, D=0.1, L=0.1, n=6)
+    props = os.path.join(case, "constant", "riserProperties")
+    ff.set_nested(props, "A", "0.2")
+    ff.set_nested(props, "f", "4")
+    ff.set_nested(props, "phi0", "1.5707963267948966")
+    control = os.path.join(case, "system", "controlDict")
+    for entry, value in (("deltaT", "1e-4"), ("endTime", end),
+                         ("writeInterval", write_interval or end), ("writePrecision", "17")):
+        ff.set_nested(control, entry, value)
+    ff.remove_entry(control, "functions")
+    cloud = os.path.join(case, "constant", "kinematicCloudProperties")
+    ff.set_nested(cloud, "cloudFunctions", "{}")
+    ff.set_nested(cloud, "subModels/injectionModels", "{ %s }" % fill_injection(0.15, d=0.01))
+    ff.set_nested(cloud, "constantProperties/youngsModulus", "1e7")
+    coeffs = "subModels/riserWallContactCoeffs/"
+    ff.set_nested(cloud, coeffs + "wall/youngsModulus", "1e7")
+    ff.set_nested(cloud, coeffs + "stepsPerContact", "10")
+    ff.set_nested(cloud, coeffs + "aloneAtWall", alone_at_wall)
+    ff.set_nested(cloud, coeffs + "pairs",
+                  "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.3; }")
+
+
 def fill_injection(cv, d=None, seed=1, sizes=None):
     """The injector 'ores' of a coupled_pipe_case, as text: the section
     filled at the start (riserFill) at the solids fraction cv with ores at

@@ -88,6 +88,39 @@ def read_scalars(path, entry=None):
     return values
 
 
+def read_scalar_lists(path):
+    """The lists of a lagrangian field of scalar fields (one list per
+    particle, e.g. N ( n1 (a b ...) n2 (...) ... ), a list of size n
+    uniform as n{a}), as lists of floats."""
+    tokens = re.findall(r"[(){}]|[^\s(){}]+", _body(path))
+    k = 0
+
+    def take():
+        nonlocal k
+        k += 1
+        return tokens[k - 1]
+
+    count = int(take())
+    if take() != "(":
+        raise ValueError("%s: not a list of lists" % path)
+    lists = []
+    for _ in range(count):
+        n = int(take())
+        bracket = take()
+        if bracket == "{":
+            lists.append([float(take())] * n)
+            take()
+            continue
+        values = []
+        while tokens[k] != ")":
+            values.append(float(take()))
+        take()
+        if len(values) != n:
+            raise ValueError("%s: a list of %d values says %d" % (path, len(values), n))
+        lists.append(values)
+    return lists
+
+
 def read_entry(path, name):
     """The number of a top-level entry 'name value;' or 'name [dims] value;'
     of a dictionary file, or None when the entry is absent."""

@@ -8,6 +8,7 @@
 #include "IOField.H"
 #include "CompactIOField.H"
 #include "vectorFieldIOField.H"
+#include "scalarFieldIOField.H"
 #include "OStringStream.H"
 
 #include <cmath>
@@ -46,6 +47,11 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
             >> contacts_.wallImpactSpeed >> contacts_.wallEnergy
             >> contacts_.pairContacts >> contacts_.pairImpactSpeed
             >> contacts_.pairEnergy >> contacts_.subStepOffset;
+        scalarList wall, pairs;
+        is >> wall >> pairs;
+        inProgress_.wall =
+            wallContactRecord::fromNumbers(wall, "A parcel sent between processors");
+        inProgress_.setPairs(pairs, "A parcel sent between processors");
         setHistory(steps, slip0, window, tail);
     }
 
@@ -216,6 +222,42 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
             << c.time().timeName() << "; zero there" << endl;
     }
 
+    // the contacts in progress: none for a cloud written without them
+    {
+        IOobject wallIO(c.fieldIOobject("wallContactInProgress", IOobject::MUST_READ));
+        if (isFile(wallIO.objectPath()))
+        {
+            scalarFieldCompactIOField wall(wallIO, valid);
+            c.checkFieldFieldIOobject(c, wall);
+            scalarFieldCompactIOField pairs
+            (
+                c.fieldIOobject("pairContactsInProgress", IOobject::MUST_READ),
+                valid
+            );
+            c.checkFieldFieldIOobject(c, pairs);
+            label i = 0;
+            for (HistoryParcel<ParcelType>& p : c)
+            {
+                const string what
+                (
+                    "Cloud " + c.name() + " at time " + c.time().timeName()
+                  + ", particle " + Foam::name(i)
+                );
+                p.inProgress_.wall =
+                    wallContactRecord::fromNumbers(wall[i], what + " of " + wallIO.objectPath());
+                p.inProgress_.setPairs(pairs[i], what + " of " + pairs.objectPath());
+                ++i;
+            }
+        }
+        else if (valid)
+        {
+            Info<< "    " << c.name() << ": no contacts in progress"
+                << " (wallContactInProgress, pairContactsInProgress) written"
+                << " at " << c.time().timeName() << "; a contact going on"
+                << " there is taken as starting there" << endl;
+        }
+    }
+
     // clouds written without histories (another solver, or initial
     // particles): each particle starts its history at its next step
     if (valid && !histories)
@@ -356,11 +398,24 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
         np
     );
 
+    scalarFieldCompactIOField wallInProgress
+    (
+        c.fieldIOobject("wallContactInProgress", IOobject::NO_READ),
+        np
+    );
+    scalarFieldCompactIOField pairsInProgress
+    (
+        c.fieldIOobject("pairContactsInProgress", IOobject::NO_READ),
+        np
+    );
+
     label i = 0;
     for (const HistoryParcel<ParcelType>& p : c)
     {
         window[i] = p.windowList();
         tail[i] = p.tailList();
+        wallInProgress[i] = p.inProgress_.wall.numbers();
+        pairsInProgress[i] = p.inProgress_.pairNumbers();
         ++i;
     }
 
@@ -376,6 +431,8 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     pairImpactSpeed.write(valid);
     pairEnergy.write(valid);
     subStepOffset.write(valid);
+    wallInProgress.write(valid);
+    pairsInProgress.write(valid);
 }
 
 
@@ -488,7 +545,9 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << p.contacts_.pairContacts
         << token::SPACE << p.contacts_.pairImpactSpeed
         << token::SPACE << p.contacts_.pairEnergy
-        << token::SPACE << p.contacts_.subStepOffset;
+        << token::SPACE << p.contacts_.subStepOffset
+        << token::SPACE << p.inProgress_.wall.numbers()
+        << token::SPACE << p.inProgress_.pairNumbers();
 
     os.check(FUNCTION_NAME);
     return os;

@@ -200,7 +200,6 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     section_(cm.section_),
     cellAxisDistance_(cm.cellAxisDistance_),
     events_(cm.events_),
-    pairEvents_(cm.pairEvents_),
     lost_(cm.lost_)
 {}
 
@@ -742,52 +741,53 @@ void Foam::RiserWallContact<CloudType>::checkInside
 
 
 template<class CloudType>
-typename Foam::RiserWallContact<CloudType>::pairKey
-Foam::RiserWallContact<CloudType>::makePairKey
-(
-    const labelPair& a,
-    const labelPair& b
-)
-{
-    const labelPair& lo = a < b ? a : b;
-    const labelPair& hi = a < b ? b : a;
-    pairKey k;
-    k[0] = lo.first();
-    k[1] = lo.second();
-    k[2] = hi.first();
-    k[3] = hi.second();
-    return k;
-}
-
-
-template<class CloudType>
 riser::PairContactState Foam::RiserWallContact<CloudType>::pairHandOver
 (
-    const labelPair& a,
-    const labelPair& b,
-    const vector& spring
-) const
+    const grainPairSpring& s
+)
 {
     riser::PairContactState c;
-    c.spring = toCore(spring);
-    const auto iter = pairEvents_.cfind(makePairKey(a, b));
-    if (iter.found())
+    c.spring = toCore(s.spring);
+    if (s.recorded)
     {
-        // kept in the lower particle's frame
-        c.force = toCore(a < b ? (*iter).force : -(*iter).force);
+        c.force = toCore(s.force);
         c.forceKnown = true;
-        c.approachSpeed = (*iter).approachSpeed;
+        c.approachSpeed = s.approachSpeed;
     }
     return c;
 }
 
 
 template<class CloudType>
-typename Foam::RiserWallContact<CloudType>::wallContactEvent&
-Foam::RiserWallContact<CloudType>::wallContactGoesOn
+Foam::wallContactRecord* Foam::RiserWallContact<CloudType>::wallRecord
 (
-    wallContactEvents& events,
-    const labelPair& key,
+    parcelType& p,
+    const bool start
+)
+{
+    if (contactsInProgress* carried = carriedContacts(p))
+    {
+        return carried->wall.active || start ? &carried->wall : nullptr;
+    }
+    const labelPair key(p.origProc(), p.origId());
+    auto iter = events_.find(key);
+    if (iter.found())
+    {
+        return &(*iter);
+    }
+    if (!start)
+    {
+        return nullptr;
+    }
+    events_.insert(key, wallContactRecord());
+    return &events_[key];
+}
+
+
+template<class CloudType>
+void Foam::RiserWallContact<CloudType>::wallContactGoesOn
+(
+    wallContactRecord& e,
     const scalar t,
     const scalar h,
     const scalar overlap,
@@ -798,10 +798,10 @@ Foam::RiserWallContact<CloudType>::wallContactGoesOn
     const vector& spin
 )
 {
-    auto iter = events.find(key);
-    if (!iter.found())
+    if (!e.active)
     {
-        wallContactEvent e;
+        e = wallContactRecord();
+        e.active = true;
         e.start = t - h;
         e.overlapMax = overlap;
         e.normalForceMax = normalForce;
@@ -810,37 +810,33 @@ Foam::RiserWallContact<CloudType>::wallContactGoesOn
         e.spinIn = spin;
         e.normal = n;
         e.impulse = h*F;
-        events.insert(key, e);
-        return events[key];
+        return;
     }
-    wallContactEvent& e = *iter;
     e.overlapMax = max(e.overlapMax, overlap);
     e.normalForceMax = max(e.normalForceMax, normalForce);
     e.impulse += h*F;
-    return e;
 }
 
 
 template<class CloudType>
 void Foam::RiserWallContact<CloudType>::wallContactEnds
 (
-    wallContactEvents& events,
+    parcelType& p,
     contactTrace& trace,
-    const labelPair& key,
     const scalar t,
     const vector& Uout,
     const vector& n,
     const vector& spin
 )
 {
-    auto iter = events.find(key);
-    if (!iter.found())
+    const wallContactRecord* record = wallRecord(p);
+    if (!record)
     {
         return;
     }
-    const wallContactEvent& e = *iter;
+    const wallContactRecord& e = *record;
     contactFile()
-        << key.first() << ' ' << key.second() << ' '
+        << p.origProc() << ' ' << p.origId() << ' '
         << e.start << ' ' << t << ' ' << t - e.start << ' '
         << e.overlapMax << ' ' << e.normalForceMax << ' '
         << e.velocityIn.x() << ' ' << e.velocityIn.y() << ' '
@@ -852,7 +848,14 @@ void Foam::RiserWallContact<CloudType>::wallContactEnds
         << e.impulse.x() << ' ' << e.impulse.y() << ' ' << e.impulse.z()
         << endl;
     trace.recordWallContact(e.overlapMax, e.normalSpeedIn);
-    events.erase(iter);
+    if (contactsInProgress* carried = carriedContacts(p))
+    {
+        carried->wall = wallContactRecord();
+    }
+    else
+    {
+        events_.erase(labelPair(p.origProc(), p.origId()));
+    }
 }
 
 
@@ -893,12 +896,25 @@ void Foam::RiserWallContact<CloudType>::grainStates
             m.wallSpring = record.collisionData();
             m.touchingWall = true;
         }
+        const contactsInProgress* carried = carriedContacts(*parcels[i]);
         for (const auto& record : p.collisionRecords().pairRecords())
         {
             grainPairSpring s;
             s.key = m.key;
             s.other = labelPair(record.origProcOfOther(), record.origIdOfOther());
             s.spring = record.collisionData();
+            if (carried)
+            {
+                for (const pairContactRecord& r : carried->pairs)
+                {
+                    if (r.other == s.other)
+                    {
+                        s.recorded = true;
+                        s.approachSpeed = r.approachSpeed;
+                        s.force = r.force;
+                    }
+                }
+            }
             pairSprings.append(s);
         }
     }
@@ -1126,15 +1142,13 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         const grainState& m = all[local[i]];
         if (walls && m.touchingWall)
         {
-            // with the force of its last evaluation, when this processor
-            // kept it (its own particles: for their dissipation tally)
-            const auto e = events_.cfind(m.key);
-            if (e.found())
+            // with the force of its last evaluation, when its particle is
+            // this processor's (for its dissipation tally)
+            const wallContactRecord* e =
+                ownIndex[i] >= 0 ? wallRecord(*ownParcel[ownIndex[i]]) : nullptr;
+            if (e)
             {
-                grains.setWallContact
-                (
-                    i, 0, toCore(m.wallSpring), toCore((*e).force)
-                );
+                grains.setWallContact(i, 0, toCore(m.wallSpring), toCore(e->force));
             }
             else
             {
@@ -1145,12 +1159,12 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     for (const grainPairSpring& s : springs)
     {
         // each pair once, from the record of the particle first in order
-        // (the spring in its frame), with what pairEvents_ kept of it
+        // (the spring in its frame), with what that particle carries of it
         const auto i = grainOf.cfind(s.key);
         const auto j = grainOf.cfind(s.other);
         if (i.found() && j.found() && *i < *j)
         {
-            grains.setPairContact(*i, *j, pairHandOver(s.key, s.other, s.spring));
+            grains.setPairContact(*i, *j, pairHandOver(s));
         }
     }
     grains.setContactForces(grainF, grainT);
@@ -1221,7 +1235,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     std::vector<bool> inContact(ownGrain.size());
     forAll(ownGrain, i)
     {
-        inContact[i] = events_.found(all[local[ownGrain[i]]].key);
+        inContact[i] = wallRecord(*ownParcel[i]) != nullptr;
     }
     List<contactTrace> trace(ownGrain.size());
     for (label k = 1; k <= nSub; ++k)
@@ -1255,14 +1269,14 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
                 checkInside(key, c.overlap, g.radius, t);
                 wallContactGoesOn
                 (
-                    events_, key, t, h, c.overlap, fromCore(c.force),
+                    *wallRecord(*ownParcel[i], true), t, h, c.overlap, fromCore(c.force),
                     c.normalForce, Urel, nw, spin
                 );
                 inContact[i] = true;
             }
             else
             {
-                wallContactEnds(events_, trace[i], key, t, Urel, nw, spin);
+                wallContactEnds(*ownParcel[i], trace[i], t, Urel, nw, spin);
                 inContact[i] = false;
             }
         }
@@ -1292,12 +1306,12 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         if (walls)
         {
             const riser::WallContactState& c = grains.wallContact(gi, 0);
-            auto e = events_.find(m.key);
-            if (c.touching && e.found())
+            wallContactRecord* e = wallRecord(p);
+            if (c.touching && e)
             {
-                (*e).force = fromCore(c.force);
-                (*e).normal = fromCore(c.normal);
-                (*e).wallVelocity = fromCore(c.wallVelocity);
+                e->force = fromCore(c.force);
+                e->normal = fromCore(c.normal);
+                e->wallVelocity = fromCore(c.wallVelocity);
             }
             if (c.touching)
             {
@@ -1329,71 +1343,50 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         ownSteps[6*i + 5] = c.torque;
     }
 
-    // the pair contacts in progress: the own particles' springs; and kept
-    // by every processor for the next step (a pair's particles may be
-    // stepped elsewhere then), each pair from the processor of its first
-    // grain, those of the group renewed, in the frame of the lower
-    // (origProc, origId)
-    DynamicList<grainPairContact> ownPairs;
-    label acrossProcessors = 0;
+    // the pair contacts in progress: each own particle's springs, and its
+    // record of them (contactsInProgress.H: carried to the next step, to
+    // another processor, across a restart), renewed
+    for (parcelType* p : ownParcel)
+    {
+        if (contactsInProgress* carried = carriedContacts(*p))
+        {
+            carried->pairs.clear();
+        }
+    }
+    label pairsInContact = 0, acrossProcessors = 0;
     grains.forEachPairContactState
     (
         [&](std::size_t i, std::size_t j, const riser::PairContactState& state)
         {
             const grainState& a = all[local[i]];
             const grainState& b = all[local[j]];
+            // (the state is i's: its spring, and the force on i)
+            auto keep = [&state](parcelType& p, const labelPair& other, const scalar sign)
+            {
+                p.collisionRecords()
+                    .matchPairRecord(other.first(), other.second())
+                    .collisionData() = sign*fromCore(state.spring);
+                if (contactsInProgress* carried = carriedContacts(p))
+                {
+                    pairContactRecord r;
+                    r.other = other;
+                    r.approachSpeed = state.approachSpeed;
+                    r.force = sign*fromCore(state.force);
+                    carried->pairs.append(r);
+                }
+            };
             if (a.processor == me)
             {
-                ownParcel[ownIndex[i]]->collisionRecords()
-                    .matchPairRecord(b.key.first(), b.key.second())
-                    .collisionData() = fromCore(state.spring);
-                grainPairContact c;
-                c.first = a.key;
-                c.second = b.key;
-                c.spring = fromCore(state.spring);
-                c.force = fromCore(state.force);
-                c.approachSpeed = state.approachSpeed;
-                ownPairs.append(c);
+                keep(*ownParcel[ownIndex[i]], b.key, 1);
+                ++pairsInContact;
+                acrossProcessors += a.processor != b.processor;
             }
             if (b.processor == me)
             {
-                ownParcel[ownIndex[j]]->collisionRecords()
-                    .matchPairRecord(a.key.first(), a.key.second())
-                    .collisionData() = -fromCore(state.spring);
+                keep(*ownParcel[ownIndex[j]], a.key, -1);
             }
-            acrossProcessors += a.processor != b.processor && a.processor == me;
         }
     );
-    const List<grainPairContact> pairs = gatheredFromAll(List<grainPairContact>(ownPairs));
-    {
-        HashSet<labelPair, labelPair::Hash<>> group(2*all.size());
-        for (const grainState& m : all)
-        {
-            group.insert(m.key);
-        }
-        DynamicList<pairKey> ended;
-        forAllConstIters(pairEvents_, iter)
-        {
-            const pairKey& k = iter.key();
-            if (group.found(labelPair(k[0], k[1])) || group.found(labelPair(k[2], k[3])))
-            {
-                ended.append(k);
-            }
-        }
-        for (const pairKey& k : ended)
-        {
-            pairEvents_.erase(k);
-        }
-        for (const grainPairContact& c : pairs)
-        {
-            const bool firstLower = c.first < c.second;
-            pairEvents_.set
-            (
-                makePairKey(c.first, c.second),
-                pairContactEvent{c.approachSpeed, firstLower ? c.force : -c.force}
-            );
-        }
-    }
     for (parcelType* p : parcels)
     {
         // as after collide(): kept, marked not accessed
@@ -1401,8 +1394,8 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     }
     if (Pstream::parRun())
     {
-        Info<< "    riserWallContact: " << pairs.size()
-            << " pair(s) in contact, "
+        Info<< "    riserWallContact: "
+            << returnReduce(pairsInContact, sumOp<label>()) << " pair(s) in contact, "
             << returnReduce(acrossProcessors, sumOp<label>())
             << " across processor boundaries" << endl;
     }
@@ -1446,7 +1439,7 @@ void Foam::RiserWallContact<CloudType>::collide()
             !wallLaw_.valid()
          || (
                 clearOfWall(p, axisOffset, 0)
-             && (events_.empty() || !events_.found(labelPair(p.origProc(), p.origId())))
+             && !wallRecord(p)
             )
         )
         {
@@ -1474,11 +1467,12 @@ void Foam::RiserWallContact<CloudType>::collide()
         const vector n = fromCore(cp.normal);
 
         // F_prev's part of the trapezoid, with its own evaluation's normal
-        // and wall velocity (those of now for a contact in progress at a
-        // restart: events_ is not stored)
-        const auto event = events_.cfind(key);
-        const vector nPrev = event.found() ? (*event).normal : n;
-        const vector UwallPrev = event.found() ? (*event).wallVelocity : Uwall;
+        // and wall velocity (those of now for a contact in progress not
+        // recorded: a stock parcel's at a restart, or a cloud written
+        // without its contacts in progress)
+        const wallContactRecord* event = wallRecord(p);
+        const vector nPrev = event ? event->normal : n;
+        const vector UwallPrev = event ? event->wallVelocity : Uwall;
         const scalar workBefore =
             Fprev
           & fromCore
@@ -1493,7 +1487,7 @@ void Foam::RiserWallContact<CloudType>::collide()
         {
             contactTrace trace;
             trace.wallEnergy = -0.5*dt*workBefore;
-            wallContactEnds(events_, trace, key, t, p.U() - Uwall, n, spin);
+            wallContactEnds(p, trace, t, p.U() - Uwall, n, spin);
             addContactTrace(p, trace);
             // no record accessed: update() below drops the tangential spring
             continue;
@@ -1521,11 +1515,11 @@ void Foam::RiserWallContact<CloudType>::collide()
         contactTrace trace;
         trace.wallEnergy = -0.5*dt*(workBefore + c.power);
         addContactTrace(p, trace);
-        wallContactEvent& e =
-            wallContactGoesOn
-            (
-                events_, key, t, dt, overlap, F, mag(fromCore(c.law.normal)), p.U() - Uwall, n, spin
-            );
+        wallContactRecord& e = *wallRecord(p, true);
+        wallContactGoesOn
+        (
+            e, t, dt, overlap, F, mag(fromCore(c.law.normal)), p.U() - Uwall, n, spin
+        );
         e.force = F;
         e.normal = n;
         e.wallVelocity = Uwall;

@@ -33,30 +33,16 @@ Foam::Istream& Foam::operator>>(Istream& is, grainState& m)
 
 Foam::Ostream& Foam::operator<<(Ostream& os, const grainPairSpring& s)
 {
-    os  << s.key << token::SPACE << s.other << token::SPACE << s.spring;
+    os  << s.key << token::SPACE << s.other << token::SPACE << s.spring
+        << token::SPACE << s.recorded << token::SPACE << s.approachSpeed
+        << token::SPACE << s.force;
     return os;
 }
 
 
 Foam::Istream& Foam::operator>>(Istream& is, grainPairSpring& s)
 {
-    is  >> s.key >> s.other >> s.spring;
-    is.check(FUNCTION_NAME);
-    return is;
-}
-
-
-Foam::Ostream& Foam::operator<<(Ostream& os, const grainPairContact& c)
-{
-    os  << c.first << token::SPACE << c.second << token::SPACE << c.spring
-        << token::SPACE << c.force << token::SPACE << c.approachSpeed;
-    return os;
-}
-
-
-Foam::Istream& Foam::operator>>(Istream& is, grainPairContact& c)
-{
-    is  >> c.first >> c.second >> c.spring >> c.force >> c.approachSpeed;
+    is  >> s.key >> s.other >> s.spring >> s.recorded >> s.approachSpeed >> s.force;
     is.check(FUNCTION_NAME);
     return is;
 }
