@@ -36,10 +36,9 @@ Description
                                     // (the paper's)
         contactStep 1e-7;           // [s], >= 1e-10, default 1e-6 D/u_cm
         eps         1e-3;           // contact when the gap < eps d, [0, 1)
-        contactStart detection;     // detection | geometric: the contact's
-                                    // overlap starts at zero (or the gap)
-                                    // or at the flow step's penetration
-    }
+    }                               // (the contact's overlap starts at the
+                                    // gap, or at zero if the flow step
+                                    // ended inside the wall)
     \endverbatim
 
     Sweeps (-sweep): the case's first release over a grid of riser
