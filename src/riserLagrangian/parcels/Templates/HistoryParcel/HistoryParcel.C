@@ -82,6 +82,10 @@ void Foam::HistoryParcel<ParcelType>::transformProperties(const tensor& T)
     {
         r.force = transform(T, r.force);
     }
+    // (the force and torque; the position as the riser's cyclic ends, which
+    // are translational, leave it: RiserCloud wraps the offset)
+    subStepEnd_[1] = transform(T, subStepEnd_[1]);
+    subStepEnd_[2] = transform(T, subStepEnd_[2]);
 }
 
 

@@ -35,7 +35,8 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
     history_(emptyHistory()),
     UNode_(Zero),
     historyKnown_(Zero),
-    injectionPending_(false)
+    injectionPending_(false),
+    subStepEnd_(vector::zero)
 {
     if (readFields)
     {
@@ -48,7 +49,7 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
             >> contacts_.pairContacts >> contacts_.pairImpactSpeed
             >> contacts_.pairEnergy >> contacts_.subStepOffset;
         scalarList wall, pairs;
-        is >> wall >> pairs;
+        is >> wall >> pairs >> subStepEnd_;
         inProgress_.wall =
             wallContactRecord::fromNumbers(wall, "A parcel sent between processors");
         inProgress_.setPairs(pairs, "A parcel sent between processors");
@@ -547,7 +548,8 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << p.contacts_.pairEnergy
         << token::SPACE << p.contacts_.subStepOffset
         << token::SPACE << p.inProgress_.wall.numbers()
-        << token::SPACE << p.inProgress_.pairNumbers();
+        << token::SPACE << p.inProgress_.pairNumbers()
+        << token::SPACE << p.subStepEnd_;
 
     os.check(FUNCTION_NAME);
     return os;

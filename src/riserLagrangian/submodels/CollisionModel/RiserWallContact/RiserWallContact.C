@@ -1028,7 +1028,7 @@ void Foam::RiserWallContact<CloudType>::haloOf
 
 
 template<class CloudType>
-Foam::contactSteps
+Foam::List<Foam::contactStep>
 Foam::RiserWallContact<CloudType>::meshFreeContacts
 (
     const UList<parcelType*>& parcels,
@@ -1285,8 +1285,8 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     // The contact trace of the flow step (contactTrace.H) of each own
     // particle, its wall contact's last force, springs; and what the
     // contacts added to its free motion
-    List<labelPair> ownKeys(ownGrain.size());
-    List<vector> ownSteps(6*ownGrain.size());
+    // (in the order of parcels)
+    List<contactStep> ownSteps(parcels.size());
     forAll(ownGrain, i)
     {
         const label gi = ownGrain[i];
@@ -1334,13 +1334,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         c.dL = m.inertia*fromCore(riser::Vector(g.omega - gFree.omega));
         c.f = (m.mP/m.mEff)*fromCore(grains.contactForce(gi));
         c.torque = rotation_ ? fromCore(grains.contactTorque(gi)) : vector::zero;
-        ownKeys[i] = m.key;
-        ownSteps[6*i] = c.x;
-        ownSteps[6*i + 1] = c.dx;
-        ownSteps[6*i + 2] = c.dU;
-        ownSteps[6*i + 3] = c.dL;
-        ownSteps[6*i + 4] = c.f;
-        ownSteps[6*i + 5] = c.torque;
+        ownSteps[local[gi] - firstOwn] = c;
     }
 
     // the pair contacts in progress: each own particle's springs, and its
@@ -1400,23 +1394,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
             << " across processor boundaries" << endl;
     }
 
-    // what the contacts added to the free motion of every particle of the
-    // group (a particle may change processor in its move through the mesh)
-    const List<labelPair> keys = gatheredFromAll(ownKeys);
-    const List<vector> steps = gatheredFromAll(ownSteps);
-    contactSteps result(2*keys.size());
-    forAll(keys, i)
-    {
-        contactStep c;
-        c.x = steps[6*i];
-        c.dx = steps[6*i + 1];
-        c.dU = steps[6*i + 2];
-        c.dL = steps[6*i + 3];
-        c.f = steps[6*i + 4];
-        c.torque = steps[6*i + 5];
-        result.insert(keys[i], c);
-    }
-    return result;
+    return ownSteps;
 }
 
 
