@@ -453,41 +453,105 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         return;
     }
 
-    // with pairs: the clusters of the particles of all processors (each
-    // processor finds the same), by key order
-    List<vector> ownX(nOwn), ownU(nOwn);
-    List<scalar> ownD(nOwn), ownM(nOwn);
-    labelList ownNew(nOwn);
+    // with pairs: the clusters. Each processor finds the pairs of its own
+    // particles, with copies of the other processors' particles near its
+    // own (ghosts: boundaryExchange), and the clusters' needs (each
+    // cluster's largest) spread across the processors by exchanging the
+    // needs of the particles each holds as another's ghosts until none
+    // grows
+    List<vector> ownX(nOwn);
+    // per particle: key (2), U (3), d, m_eff, need, injected now
+    const label nData = 9;
+    List<scalar> ownData(nData*nOwn);
+    scalar rMax = 0, uMax = 0;
     {
         label i = 0;
         for (const parcelType& p : this->owner())
         {
             ownX[i] = p.position();
-            ownU[i] = p.U();
-            ownD[i] = p.d();
-            ownM[i] = effectiveMass(p);
+            scalar* d = &ownData[nData*i];
+            d[0] = p.origProc();
+            d[1] = p.origId();
+            d[2] = p.U().x();
+            d[3] = p.U().y();
+            d[4] = p.U().z();
+            d[5] = p.d();
+            d[6] = effectiveMass(p);
+            d[7] = ownNeed[i];
             // injected in this step (a parcel that moved between
             // processors is older)
-            ownNew[i] = p.age() == 0;
+            d[8] = p.age() == 0;
+            rMax = max(rMax, 0.5*p.d());
+            uMax = max(uMax, mag(p.U()));
             ++i;
         }
     }
-    // (in the same order on every processor: processor by processor)
-    const List<labelPair> allKeys = gatheredFromAll(ownKeys);
-    const List<vector> allX = gatheredFromAll(ownX), allU = gatheredFromAll(ownU);
-    const List<scalar> allD = gatheredFromAll(ownD), allM = gatheredFromAll(ownM);
-    const labelList allNeed = gatheredFromAll(ownNeed);
-    const labelList allNew = gatheredFromAll(ownNew);
-    const std::size_t n = allKeys.size();
+    reduce(rMax, maxOp<scalar>());
+    reduce(uMax, maxOp<scalar>());
+    // within a step a contact can speed a particle up to about twice the
+    // fastest particle's speed, so a pair may close by 4 U_max dt: a reach
+    // from each pair's own speeds would miss a resting particle struck by
+    // a neighbour and left to overlap the next
+    const scalar reach = 4*uMax*dt;
+    reach_ = reach;
+    radiusMax_ = rMax;
+    const scalar cutoff = 2*rMax + reach + SMALL;
 
+    // this processor's particles (0 .. nOwn - 1), then the ghosts
+    const labelListList send =
+        nearProcessors(ownX, cutoff, section_.periodic ? section_.length : 0);
+    List<List<vector>> ghostX;
+    List<List<scalar>> ghostData;
+    {
+        ghostX = exchanged(send, ownX);
+        labelListList sendRows(send.size());
+        forAll(send, proc)
+        {
+            sendRows[proc].setSize(nData*send[proc].size());
+            forAll(send[proc], k)
+            {
+                for (label c = 0; c < nData; ++c)
+                {
+                    sendRows[proc][nData*k + c] = nData*send[proc][k] + c;
+                }
+            }
+        }
+        ghostData = exchanged(sendRows, ownData);
+    }
+    DynamicList<labelPair> keys(nOwn);
+    DynamicList<vector> X(nOwn), U(nOwn);
+    DynamicList<scalar> D(nOwn), M(nOwn);
+    DynamicList<label> need(nOwn), injected(nOwn);
+    auto add = [&](const vector& x, const scalar* d)
+    {
+        X.append(x);
+        keys.append(labelPair(label(d[0]), label(d[1])));
+        U.append(vector(d[2], d[3], d[4]));
+        D.append(d[5]);
+        M.append(d[6]);
+        need.append(label(d[7]));
+        injected.append(label(d[8]));
+    };
+    forAll(ownX, i)
+    {
+        add(ownX[i], &ownData[nData*i]);
+    }
+    // (the ghosts of each processor in its order)
+    labelListList ghostIndex(ghostX.size());
+    forAll(ghostX, proc)
+    {
+        ghostIndex[proc].setSize(ghostX[proc].size());
+        forAll(ghostX[proc], k)
+        {
+            ghostIndex[proc][k] = X.size();
+            add(ghostX[proc][k], &ghostData[proc][nData*k]);
+        }
+    }
+    const std::size_t n = X.size();
     std::vector<riser::Vector> x(n);
-    std::vector<label> need(allNeed.begin(), allNeed.end());
-    scalar rMax = 0, uMax = 0;
     for (std::size_t i = 0; i < n; ++i)
     {
-        x[i] = toCore(allX[i]);
-        rMax = max(rMax, 0.5*allD[i]);
-        uMax = max(uMax, mag(allU[i]));
+        x[i] = toCore(X[i]);
     }
 
     // clusters of particles that may touch within the step: union-find
@@ -502,69 +566,78 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         }
         return i;
     };
-    // within a step a contact can speed a particle up to about twice the
-    // fastest particle's speed, so a pair may close by 4 U_max dt: a reach
-    // from each pair's own speeds would miss a resting particle struck by
-    // a neighbour and left to overlap the next
-    const scalar reach = 4*uMax*dt;
-    reach_ = reach;
-    radiusMax_ = rMax;
-    forEachNearPair(x, 2*rMax + reach + SMALL, [&](std::size_t i, std::size_t j, scalar dz)
+    std::vector<bool> inCluster(n, false);
+    forEachNearPair(x, cutoff, [&](std::size_t i, std::size_t j, scalar dz)
     {
         const label p = i, q = j;
-        const scalar gap =
-            (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(allD[p] + allD[q]);
+        const scalar gap = (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(D[p] + D[q]);
         if (gap > reach)
         {
             return;
         }
-        if (gap <= 0 && (allNew[p] || allNew[q]))
+        if (gap <= 0 && (injected[p] || injected[q]))
         {
             FatalErrorInFunction
-                << "particles " << allKeys[p].second() << " (processor "
-                << allKeys[p].first() << ") at " << allX[p] << " and "
-                << allKeys[q].second() << " (processor " << allKeys[q].first()
-                << ") at " << allX[q] << ", of diameters " << allD[p]
-                << " and " << allD[q] << ", are released touching or"
+                << "particles " << keys[p].second() << " (processor "
+                << keys[p].first() << ") at " << X[p] << " and "
+                << keys[q].second() << " (processor " << keys[q].first()
+                << ") at " << X[q] << ", of diameters " << D[p]
+                << " and " << D[q] << ", are released touching or"
                 << " overlapping each other: overlap " << -gap << " >= 0;"
                 << " release them at least (d_p + d_q)/2 apart"
                 << exit(FatalError);
         }
         // the largest impact speed the pair can reach in the step
-        const scalar speed = max(mag(allU[p]) + mag(allU[q]), 2*uMax);
-        const riser::ContactBody body =
-            riser::pairBody(0.5*allD[p], allM[p], 0.5*allD[q], allM[q]);
+        const scalar speed = max(mag(U[p]) + mag(U[q]), 2*uMax);
+        const riser::ContactBody body = riser::pairBody(0.5*D[p], M[p], 0.5*D[q], M[q]);
         const scalar tc = pairLaw_->contactTime(body, max(speed, SMALL));
         const scalar needed = ceil(stepsPerContact_*dt/tc);
         checkNeeded
         (
-            needed, allKeys[p], allX[p], tc,
-            "contact with particle " + Foam::name(allKeys[q].second())
-          + " (processor " + Foam::name(allKeys[q].first()) + ")"
+            needed, keys[p], X[p], tc,
+            "contact with particle " + Foam::name(keys[q].second())
+          + " (processor " + Foam::name(keys[q].first()) + ")"
         );
         const label k = max(label(needed), label(1));
-        need[i] = max(need[i], k);
-        need[j] = max(need[j], k);
+        need[p] = max(need[p], k);
+        need[q] = max(need[q], k);
+        inCluster[i] = inCluster[j] = true;
         root[find(i)] = find(j);
     });
-    std::vector<label> clusterNeed(n, 0), clusterSize(n, 0);
-    for (std::size_t i = 0; i < n; ++i)
+
+    // each cluster's largest need, spread across the processors
+    for (bool grown = true; grown; )
     {
-        clusterNeed[find(i)] = max(clusterNeed[find(i)], need[i]);
-        ++clusterSize[find(i)];
+        std::vector<label> clusterNeed(n, 0);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            clusterNeed[find(i)] = max(clusterNeed[find(i)], need[i]);
+        }
+        grown = false;
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            grown = grown || (label(i) < nOwn && clusterNeed[find(i)] > need[i]);
+            need[i] = clusterNeed[find(i)];
+        }
+        const List<List<label>> ghostNeed =
+            exchanged(send, SubList<label>(need, nOwn));
+        forAll(ghostNeed, proc)
+        {
+            forAll(ghostNeed[proc], k)
+            {
+                label& g = need[ghostIndex[proc][k]];
+                grown = grown || ghostNeed[proc][k] > g;
+                g = max(g, ghostNeed[proc][k]);
+            }
+        }
+        reduce(grown, orOp<bool>());
     }
-    // (every processor keeps the needs of all: the gathered lists hold them)
-    for (std::size_t i = 0; i < n; ++i)
+    for (label i = 0; i < nOwn; ++i)
     {
-        const label k = find(i);
         needs_.set
         (
-            allKeys[i],
-            subCycleNeed
-            {
-                clusterNeed[k],
-                clusterSize[k] > 1 || (aloneMeshFree_ && clusterNeed[k] > 0)
-            }
+            keys[i],
+            subCycleNeed{need[i], inCluster[i] || (aloneMeshFree_ && need[i] > 0)}
         );
     }
 }

@@ -5,6 +5,71 @@
 
 #include "grainExchange.H"
 #include "IOstreams.H"
+#include "DynamicList.H"
+#include "FixedList.H"
+
+// * * * * * * * * * * * * * * * Global Functions  * * * * * * * * * * * * //
+
+Foam::labelListList Foam::nearProcessors
+(
+    const UList<vector>& x,
+    const scalar cutoff,
+    const scalar periodLength
+)
+{
+    // each processor's box of centres (empty: lo > hi)
+    List<FixedList<vector, 2>> boxes(Pstream::nProcs());
+    FixedList<vector, 2>& mine = boxes[Pstream::myProcNo()];
+    mine[0] = vector::uniform(VGREAT);
+    mine[1] = vector::uniform(-VGREAT);
+    for (const vector& p : x)
+    {
+        mine[0] = min(mine[0], p);
+        mine[1] = max(mine[1], p);
+    }
+    Pstream::gatherList(boxes);
+    Pstream::scatterList(boxes);
+
+    labelListList send(Pstream::nProcs());
+    forAll(boxes, proc)
+    {
+        const vector lo = boxes[proc][0] - vector::uniform(cutoff);
+        const vector hi = boxes[proc][1] + vector::uniform(cutoff);
+        if (proc == Pstream::myProcNo() || lo.x() > hi.x())
+        {
+            continue;
+        }
+        DynamicList<label> near;
+        forAll(x, i)
+        {
+            const vector& p = x[i];
+            bool inside =
+                p.x() >= lo.x() && p.x() <= hi.x()
+             && p.y() >= lo.y() && p.y() <= hi.y();
+            if (inside)
+            {
+                bool inZ = false;
+                for (const scalar shift : {0.0, periodLength, -periodLength})
+                {
+                    const scalar z = p.z() + shift;
+                    inZ = inZ || (z >= lo.z() && z <= hi.z());
+                    if (periodLength <= 0)
+                    {
+                        break;
+                    }
+                }
+                inside = inZ;
+            }
+            if (inside)
+            {
+                near.append(i);
+            }
+        }
+        send[proc].transfer(near);
+    }
+    return send;
+}
+
 
 // * * * * * * * * * * * * * * * IOstream Operators  * * * * * * * * * * * * //
 
