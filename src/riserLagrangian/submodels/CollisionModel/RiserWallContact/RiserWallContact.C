@@ -11,7 +11,6 @@
 #include "granular/nearPairs.hpp"
 #include "granular/granularSystem.hpp"
 #include "RiserCloud.H"
-#include "ListListOps.H"
 #include "UIPstream.H"
 #include "UOPstream.H"
 
@@ -371,22 +370,6 @@ void Foam::RiserWallContact<CloudType>::forEachNearPair
         pairs.setPeriodic(section_.z0, section_.length);
     }
     pairs.forEachPair(x, cutoff, f);
-}
-
-
-namespace Foam
-{
-    //- The lists of all processors joined, in processor order, on every
-    //  processor
-    template<class T>
-    List<T> gatheredFromAll(const UList<T>& local)
-    {
-        List<List<T>> all(Pstream::nProcs());
-        all[Pstream::myProcNo()] = local;
-        Pstream::gatherList(all);
-        Pstream::scatterList(all);
-        return ListListOps::combine<List<T>>(all, accessOp<List<T>>());
-    }
 }
 
 
@@ -1012,14 +995,15 @@ void Foam::RiserWallContact<CloudType>::haloOf
     if (pairLaw_.valid() && nProcs > 1)
     {
         // the pairs of particles of two processors that may touch within
-        // the step: each is in the other's halo (the same test as the
-        // clusters': every processor finds the same pairs)
+        // the step: each is in the other's halo (both processors evaluate
+        // the same expression on the same numbers, so each finds the pair
+        // alike, and what one sends the other expects)
         std::vector<riser::Vector> x(all.size());
         forAll(all, k)
         {
             x[k] = toCore(all[k].x);
         }
-        forEachNearPair(x, 2*radiusMax_ + reach_ + SMALL, [&](std::size_t a, std::size_t b, scalar dz)
+        forEachNearPair(x, 2*radiusMax_ + reach_ + SMALL, [&](std::size_t a, std::size_t b, scalar)
         {
             const grainState& p = all[a];
             const grainState& q = all[b];
@@ -1027,8 +1011,15 @@ void Foam::RiserWallContact<CloudType>::haloOf
             {
                 return;
             }
-            const scalar gap =
-                (x[b] + riser::Vector(0, 0, dz) - x[a]).norm() - (p.R + q.R);
+            // (from the particle of the lower key to the other, the nearest
+            // image: the same expression on both processors)
+            const bool pFirst = p.key < q.key;
+            riser::Vector d = pFirst ? riser::Vector(x[b] - x[a]) : riser::Vector(x[a] - x[b]);
+            if (section_.periodic)
+            {
+                d.z() -= section_.length*std::round(d.z()/section_.length);
+            }
+            const scalar gap = d.norm() - (p.R + q.R);
             if (gap > reach_)
             {
                 return;
@@ -1117,23 +1108,71 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     const label me = Pstream::myProcNo();
     const bool walls = wallLaw_.valid();
 
-    // the group's particles of all processors at the step's start
+    // the group's particles at the step's start: this processor's (in the
+    // order of parcels), then, with pairs, copies of the other processors'
+    // near the box of its own (each processor's in its order), with their
+    // pair springs
     List<grainState> all;
     List<grainPairSpring> springs;
     {
         List<grainState> own;
         List<grainPairSpring> ownSprings;
         grainStates(parcels, fluidAcceleration, startOffset, own, ownSprings);
-        all = gatheredFromAll(own);
-        springs = gatheredFromAll(ownSprings);
+        DynamicList<grainState> grains(own);
+        DynamicList<grainPairSpring> pairSprings(ownSprings);
+        if (pairLaw_.valid() && Pstream::parRun())
+        {
+            List<vector> x(own.size());
+            HashTable<label, labelPair, labelPair::Hash<>> ownIndex(2*own.size());
+            forAll(own, i)
+            {
+                x[i] = own[i].x;
+                ownIndex.insert(own[i].key, i);
+            }
+            const labelListList send = nearProcessors
+            (
+                x, 2*radiusMax_ + reach_ + SMALL, section_.periodic ? section_.length : 0
+            );
+            // (the springs of the particles sent)
+            List<labelList> sendSprings(send.size());
+            forAll(send, proc)
+            {
+                if (send[proc].empty())
+                {
+                    continue;
+                }
+                boolList sent(own.size(), false);
+                UIndirectList<bool>(sent, send[proc]) = true;
+                DynamicList<label> k;
+                forAll(ownSprings, s)
+                {
+                    if (sent[ownIndex[ownSprings[s].key]])
+                    {
+                        k.append(s);
+                    }
+                }
+                sendSprings[proc].transfer(k);
+            }
+            for (const List<grainState>& g : exchanged(send, own))
+            {
+                grains.append(g);
+            }
+            for (const List<grainPairSpring>& g : exchanged(sendSprings, ownSprings))
+            {
+                pairSprings.append(g);
+            }
+        }
+        all.transfer(grains);
+        springs.transfer(pairSprings);
     }
     // the explicit drag of the sub-steps stays stable: drag h <= 1 (the
-    // same on every processor: all particles' rates)
+    // same on every processor: the largest rate)
     label nSub = max(nSubNeeded, label(1));
     for (const grainState& m : all)
     {
         nSub = max(nSub, label(ceil(m.drag*dt)));
     }
+    reduce(nSub, maxOp<label>());
     const scalar h = dt/nSub;
 
     // this processor steps its own particles and its halo's copies of the
@@ -1182,13 +1221,9 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
     // holds this processor's in that order) and free grain
     DynamicList<label> ownGrain(parcels.size());
     DynamicList<parcelType*> ownParcel(parcels.size());
-    // (all holds the processors' particles one processor after the
-    // other, this processor's in the order of parcels)
-    label firstOwn = 0;
-    while (firstOwn < all.size() && all[firstOwn].processor != me)
-    {
-        ++firstOwn;
-    }
+    // (all holds this processor's particles first, in the order of
+    // parcels)
+    const label firstOwn = 0;
     labelList ownIndex(n, -1);
     forAll(local, i)
     {
