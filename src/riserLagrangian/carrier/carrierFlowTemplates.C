@@ -6,7 +6,59 @@
 #include "carrierFlow.H"
 #include "coreVector.H"
 
+#include <type_traits>
+#include <utility>
+
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace carrierFlowDetail
+{
+    //- Are the cloud's particles colliding parcels (with collision
+    //  records: a colliding cloud)? (The models are made for the cloud's
+    //  kinematic layer, which has no collision model of its own to ask.)
+    template<class CloudType, class = void>
+    struct collides : std::false_type {};
+
+    template<class CloudType>
+    struct collides
+    <
+        CloudType,
+        std::void_t
+        <
+            decltype(std::declval<typename CloudType::parcelType&>().collisionRecords())
+        >
+    >
+    :
+        std::true_type {};
+}
+}
+
+
+template<class CloudType>
+Foam::carrierFlow& Foam::carrierFlow::ofCloud(const CloudType& cloud)
+{
+    const dictionary& models = cloud.subModelProperties();
+    if (!carrierFlowDetail::collides<CloudType>::value && models.found("collisionModel"))
+    {
+        const word type(models.get<word>("collisionModel"));
+        if (type != "none")
+        {
+            FatalIOErrorInFunction(models)
+                << "entry 'collisionModel' = " << type << " in the cloud "
+                << cloud.name() << ", whose particles do not collide (a"
+                << " cloud without a collision model, as MPPICFoam's and"
+                << " uncoupledKinematicParcelFoam's): it would be ignored."
+                << " Remove it (the wall is then the patchInteractionModel's),"
+                << " or run a colliding cloud: riserParcelFoam,"
+                << " riserCoupledFoam, DPMFoam, icoUncoupledKinematicParcelFoam"
+                << exit(FatalIOError);
+        }
+    }
+    return New(cloud.U());
+}
+
 
 template<class ParcelType>
 const Foam::point& Foam::carrierFlow::position(const ParcelType& p) const

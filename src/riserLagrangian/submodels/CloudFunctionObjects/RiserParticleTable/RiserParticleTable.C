@@ -106,7 +106,7 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
-    carrier_(carrierFlow::New(owner.U())),
+    carrier_(carrierFlow::ofCloud(owner)),
     interval_(checkedEntry::count(this->coeffDict(), "interval", 1, 1000000000, 1)),
     length_(boundBox(owner.mesh().points()).span().z())
 {

@@ -350,7 +350,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
-    carrier_(carrierFlow::New(owner.U())),
+    carrier_(carrierFlow::ofCloud(owner)),
     interval_
     (
         checkedEntry::inRange(this->coeffDict(), "interval", 0, false, 1e9, true, 0)

@@ -113,7 +113,7 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
 )
 :
     CollisionModel<CloudType>(dict, owner, typeName),
-    carrier_(carrierFlow::New(owner.U())),
+    carrier_(carrierFlow::ofCloud(owner)),
     wallLaw_(readWallLaw()),
     rotation_(this->coeffDict().lookupOrDefault("rotation", Switch(false))),
     stepsPerContact_

@@ -18,7 +18,7 @@ Foam::RiserOreInjection<CloudType>::RiserOreInjection
 )
 :
     InjectionModel<CloudType>(dict, owner, modelName, modelType),
-    carrier_(carrierFlow::New(owner.U())),
+    carrier_(carrierFlow::ofCloud(owner)),
     source_
     (
         std::make_shared<oreSource>

@@ -243,7 +243,7 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
-    carrier_(carrierFlow::New(owner.U())),
+    carrier_(carrierFlow::ofCloud(owner)),
     coefficient_
     (
         checkedEntry::choice<riser::BassetModel>

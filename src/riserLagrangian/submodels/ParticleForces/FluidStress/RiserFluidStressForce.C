@@ -21,7 +21,7 @@ Foam::RiserFluidStressForce<CloudType>::RiserFluidStressForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, forceType, readCoeffs),
-    carrier_(carrierFlow::New(owner.U()))
+    carrier_(carrierFlow::ofCloud(owner))
 {
     if (!readCoeffs)
     {

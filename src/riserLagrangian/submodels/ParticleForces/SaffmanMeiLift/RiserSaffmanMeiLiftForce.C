@@ -19,7 +19,7 @@ Foam::RiserSaffmanMeiLiftForce<CloudType>::RiserSaffmanMeiLiftForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, false),
-    carrier_(carrierFlow::New(owner.U()))
+    carrier_(carrierFlow::ofCloud(owner))
 {
     modelEntries::noCoeffs(dict, typeName);
 }

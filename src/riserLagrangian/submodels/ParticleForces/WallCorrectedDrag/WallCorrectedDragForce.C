@@ -64,7 +64,7 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, typeName, true),
-    carrier_(carrierFlow::New(owner.U())),
+    carrier_(carrierFlow::ofCloud(owner)),
     law_(modelEntries::dragLaw(this->coeffs())),
     voidage_(modelEntries::dragVoidage(this->coeffs())),
     pipeDiameter_
