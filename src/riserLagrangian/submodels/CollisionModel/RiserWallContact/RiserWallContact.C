@@ -374,6 +374,26 @@ void Foam::RiserWallContact<CloudType>::forEachNearPair
 
 
 template<class CloudType>
+Foam::scalar Foam::RiserWallContact<CloudType>::pairGap
+(
+    const riser::Vector& xa,
+    const labelPair& ka,
+    const scalar Ra,
+    const riser::Vector& xb,
+    const labelPair& kb,
+    const scalar Rb
+) const
+{
+    riser::Vector d = ka < kb ? riser::Vector(xb - xa) : riser::Vector(xa - xb);
+    if (section_.periodic)
+    {
+        d.z() -= section_.length*std::round(d.z()/section_.length);
+    }
+    return d.norm() - (Ra + Rb);
+}
+
+
+template<class CloudType>
 void Foam::RiserWallContact<CloudType>::checkCloudRunsThis() const
 {
     const bool riserCloud =
@@ -438,7 +458,7 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
 
     // with pairs: the clusters. Each processor finds the pairs of its own
     // particles, with copies of the other processors' particles near its
-    // own (ghosts: boundaryExchange), and the clusters' needs (each
+    // own (ghosts: nearProcessors), and the clusters' needs (each
     // cluster's largest) spread across the processors by exchanging the
     // needs of the particles each holds as another's ghosts until none
     // grows
@@ -550,10 +570,10 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         return i;
     };
     std::vector<bool> inCluster(n, false);
-    forEachNearPair(x, cutoff, [&](std::size_t i, std::size_t j, scalar dz)
+    forEachNearPair(x, cutoff, [&](std::size_t i, std::size_t j, scalar)
     {
         const label p = i, q = j;
-        const scalar gap = (x[j] + riser::Vector(0, 0, dz) - x[i]).norm() - 0.5*(D[p] + D[q]);
+        const scalar gap = pairGap(x[p], keys[p], 0.5*D[p], x[q], keys[q], 0.5*D[q]);
         if (gap > reach)
         {
             return;
@@ -1011,15 +1031,7 @@ void Foam::RiserWallContact<CloudType>::haloOf
             {
                 return;
             }
-            // (from the particle of the lower key to the other, the nearest
-            // image: the same expression on both processors)
-            const bool pFirst = p.key < q.key;
-            riser::Vector d = pFirst ? riser::Vector(x[b] - x[a]) : riser::Vector(x[a] - x[b]);
-            if (section_.periodic)
-            {
-                d.z() -= section_.length*std::round(d.z()/section_.length);
-            }
-            const scalar gap = d.norm() - (p.R + q.R);
+            const scalar gap = pairGap(x[a], p.key, p.R, x[b], q.key, q.R);
             if (gap > reach_)
             {
                 return;
@@ -1141,8 +1153,11 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
                 {
                     continue;
                 }
-                boolList sent(own.size(), false);
-                UIndirectList<bool>(sent, send[proc]) = true;
+                std::vector<bool> sent(own.size(), false);
+                for (const label i : send[proc])
+                {
+                    sent[i] = true;
+                }
                 DynamicList<label> k;
                 forAll(ownSprings, s)
                 {
