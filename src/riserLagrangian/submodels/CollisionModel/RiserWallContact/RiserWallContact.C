@@ -463,8 +463,9 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     // needs of the particles each holds as another's ghosts until none
     // grows
     List<vector> ownX(nOwn);
-    // per particle: key (2), U (3), d, m_eff, need, injected now
-    const label nData = 9;
+    // per particle: position (3), key (2), U (3), d, m_eff, need,
+    // injected now (sent to the other processors as one row of numbers)
+    const label nData = 12;
     List<scalar> ownData(nData*nOwn);
     scalar rMax = 0, uMax = 0;
     {
@@ -473,17 +474,20 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         {
             ownX[i] = p.position();
             scalar* d = &ownData[nData*i];
-            d[0] = p.origProc();
-            d[1] = p.origId();
-            d[2] = p.U().x();
-            d[3] = p.U().y();
-            d[4] = p.U().z();
-            d[5] = p.d();
-            d[6] = effectiveMass(p);
-            d[7] = ownNeed[i];
+            d[0] = ownX[i].x();
+            d[1] = ownX[i].y();
+            d[2] = ownX[i].z();
+            d[3] = p.origProc();
+            d[4] = p.origId();
+            d[5] = p.U().x();
+            d[6] = p.U().y();
+            d[7] = p.U().z();
+            d[8] = p.d();
+            d[9] = effectiveMass(p);
+            d[10] = ownNeed[i];
             // injected in this step (a parcel that moved between
             // processors is older)
-            d[8] = p.age() == 0;
+            d[11] = p.age() == 0;
             rMax = max(rMax, 0.5*p.d());
             uMax = max(uMax, mag(p.U()));
             ++i;
@@ -503,10 +507,8 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     // this processor's particles (0 .. nOwn - 1), then the ghosts
     const labelListList send =
         nearProcessors(ownX, cutoff, section_.periodic ? section_.length : 0);
-    List<List<vector>> ghostX;
     List<List<scalar>> ghostData;
     {
-        ghostX = exchanged(send, ownX);
         labelListList sendRows(send.size());
         forAll(send, proc)
         {
@@ -525,29 +527,29 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
     DynamicList<vector> X(nOwn), U(nOwn);
     DynamicList<scalar> D(nOwn), M(nOwn);
     DynamicList<label> need(nOwn), injected(nOwn);
-    auto add = [&](const vector& x, const scalar* d)
+    auto add = [&](const scalar* d)
     {
-        X.append(x);
-        keys.append(labelPair(label(d[0]), label(d[1])));
-        U.append(vector(d[2], d[3], d[4]));
-        D.append(d[5]);
-        M.append(d[6]);
-        need.append(label(d[7]));
-        injected.append(label(d[8]));
+        X.append(vector(d[0], d[1], d[2]));
+        keys.append(labelPair(label(d[3]), label(d[4])));
+        U.append(vector(d[5], d[6], d[7]));
+        D.append(d[8]);
+        M.append(d[9]);
+        need.append(label(d[10]));
+        injected.append(label(d[11]));
     };
-    forAll(ownX, i)
+    for (label i = 0; i < nOwn; ++i)
     {
-        add(ownX[i], &ownData[nData*i]);
+        add(&ownData[nData*i]);
     }
     // (the ghosts of each processor in its order)
-    labelListList ghostIndex(ghostX.size());
-    forAll(ghostX, proc)
+    labelListList ghostIndex(ghostData.size());
+    forAll(ghostData, proc)
     {
-        ghostIndex[proc].setSize(ghostX[proc].size());
-        forAll(ghostX[proc], k)
+        ghostIndex[proc].setSize(ghostData[proc].size()/nData);
+        forAll(ghostIndex[proc], k)
         {
             ghostIndex[proc][k] = X.size();
-            add(ghostX[proc][k], &ghostData[proc][nData*k]);
+            add(&ghostData[proc][nData*k]);
         }
     }
     const std::size_t n = X.size();
@@ -1135,11 +1137,11 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         if (pairLaw_.valid() && Pstream::parRun())
         {
             List<vector> x(own.size());
-            HashTable<label, labelPair, labelPair::Hash<>> ownIndex(2*own.size());
+            HashTable<label, labelPair, labelPair::Hash<>> ownOf(2*own.size());
             forAll(own, i)
             {
                 x[i] = own[i].x;
-                ownIndex.insert(own[i].key, i);
+                ownOf.insert(own[i].key, i);
             }
             const labelListList send = nearProcessors
             (
@@ -1161,7 +1163,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
                 DynamicList<label> k;
                 forAll(ownSprings, s)
                 {
-                    if (sent[ownIndex[ownSprings[s].key]])
+                    if (sent[ownOf[ownSprings[s].key]])
                     {
                         k.append(s);
                     }
