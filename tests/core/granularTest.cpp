@@ -895,3 +895,20 @@ TEST(ContactEnergy, HandedOverContactsTallyAsTheUninterruptedRun)
         }
     }
 }
+
+TEST(NearPairs, NearestImageReducesTheAxialSeparationToHalfALength)
+{
+    // closed forms: in a section of length 1 a separation of 0.7 along z is
+    // -0.3 to the nearest image, 2.2 is 0.2; x and y are untouched; open
+    // space (L = 0) keeps the separation
+    const Vector d = nearestImage(Vector(0.1, -0.2, 0.7), 1.0);
+    EXPECT_DOUBLE_EQ(d.x(), 0.1);
+    EXPECT_DOUBLE_EQ(d.y(), -0.2);
+    EXPECT_NEAR(d.z(), -0.3, 1e-15);
+    EXPECT_NEAR(nearestImage(Vector(0, 0, 2.2), 1.0).z(), 0.2, 1e-15);
+    EXPECT_NEAR(nearestImage(Vector(0, 0, -0.7), 1.0).z(), 0.3, 1e-15);
+    EXPECT_DOUBLE_EQ(nearestImage(Vector(0, 0, 0.7), 0.0).z(), 0.7);
+    // every reduced separation lies within half a length
+    for (double z = -5.0; z <= 5.0; z += 0.013)
+        EXPECT_LE(std::abs(nearestImage(Vector(0, 0, z), 1.3).z()), 0.65 + 1e-12);
+}

@@ -18,11 +18,21 @@
 
 #include "granular/cellList.hpp"
 
+#include <cmath>
 #include <cstddef>
 #include <utility>
 #include <vector>
 
 namespace riser {
+
+//- The separation d of two points as seen through the images of the second
+//  in a section periodic along z of length L (L = 0: open space): its z
+//  reduced by a whole number of L to the nearest image, in [-L/2, L/2]
+inline Vector nearestImage(Vector d, double L)
+{
+    if (L > 0.0) d.z() -= L*std::round(d.z()/L);
+    return d;
+}
 
 class NearPairs
 {

@@ -5,11 +5,11 @@
 
 #include "RiserWallContact.H"
 #include "modelEntries.H"
-#include "cloudOutputFile.H"
 #include "coreVector.H"
 #include "HistoryParcel.H"
 #include "granular/nearPairs.hpp"
 #include "granular/granularSystem.hpp"
+#include "granular/clusterPlan.hpp"
 #include "RiserCloud.H"
 #include "UIPstream.H"
 #include "UOPstream.H"
@@ -40,29 +40,6 @@ Foam::RiserWallContact<CloudType>::readWallLaw() const
             )
         )
     );
-}
-
-
-template<class CloudType>
-Foam::OFstream& Foam::RiserWallContact<CloudType>::contactFile()
-{
-    if (!contactFile_.valid())
-    {
-        contactFile_ =
-            cloudOutputFile
-            (
-                this->owner().mesh(), this->owner().name(), typeName, "contacts",
-                "# riserWallContact: one completed particle-wall contact a line\n"
-                "# velocities relative to the wall [m/s], spin [rad/s], SI units;"
-                " J: the wall force's impulse [N s]\n"
-                "# origProc origId tStart tEnd duration overlapMax"
-                " normalForceMax Uin_x Uin_y Uin_z Uout_x Uout_y Uout_z"
-                " omegaIn_x omegaIn_y omegaIn_z omegaOut_x omegaOut_y omegaOut_z"
-                " UnIn UnOut J_x J_y J_z\n",
-                3   // tEnd: a contact is kept when it ended by the start time
-            );
-    }
-    return contactFile_();
 }
 
 
@@ -133,12 +110,12 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
         )
     ),
     addedMassCoeff_(readAddedMassCoeff()),
-    pairOverlapMax_(0),
     section_(riserSection(owner.mesh())),
     cellAxisDistance_
     (
         owner.mesh().changing() ? scalarField() : cellAxisDistances(owner.mesh())
-    )
+    ),
+    ledger_(owner.mesh(), owner.name(), typeName)
 {
     if (this->coeffDict().found("pairs"))
     {
@@ -172,10 +149,6 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     Info<< ", pair contact " << (pairLaw_.valid() ? "on" : "off")
         << ", rotation " << rotation_
         << ", inertia m_p + " << addedMassCoeff_ << " m_f" << endl;
-    // the contact table is opened (and, on a restart, continued up to the
-    // start time) now, not at the first completed contact: a restart after
-    // which no contact ends must not keep the rows after its start
-    contactFile();
 }
 
 
@@ -195,11 +168,9 @@ Foam::RiserWallContact<CloudType>::RiserWallContact
     addedMassCoeff_(cm.addedMassCoeff_),
     pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
     needs_(cm.needs_),
-    pairOverlapMax_(cm.pairOverlapMax_),
     section_(cm.section_),
     cellAxisDistance_(cm.cellAxisDistance_),
-    events_(cm.events_),
-    lost_(cm.lost_)
+    ledger_(cm.ledger_)
 {}
 
 
@@ -384,12 +355,13 @@ Foam::scalar Foam::RiserWallContact<CloudType>::pairGap
     const scalar Rb
 ) const
 {
-    riser::Vector d = ka < kb ? riser::Vector(xb - xa) : riser::Vector(xa - xb);
-    if (section_.periodic)
-    {
-        d.z() -= section_.length*std::round(d.z()/section_.length);
-    }
-    return d.norm() - (Ra + Rb);
+    return
+        riser::nearestImage
+        (
+            ka < kb ? riser::Vector(xb - xa) : riser::Vector(xa - xb),
+            section_.periodic ? section_.length : 0
+        ).norm()
+      - (Ra + Rb);
 }
 
 
@@ -559,19 +531,9 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         x[i] = toCore(X[i]);
     }
 
-    // clusters of particles that may touch within the step: union-find
-    std::vector<std::size_t> root(n);
-    std::iota(root.begin(), root.end(), std::size_t(0));
-    auto find = [&root](std::size_t i)
-    {
-        while (root[i] != i)
-        {
-            root[i] = root[root[i]];
-            i = root[i];
-        }
-        return i;
-    };
-    std::vector<bool> inCluster(n, false);
+    // clusters of particles that may touch within the step, each with its
+    // largest need (the core's planner)
+    riser::ClusterPlan plan(std::vector<long>(need.begin(), need.end()));
     forEachNearPair(x, cutoff, [&](std::size_t i, std::size_t j, scalar)
     {
         const label p = i, q = j;
@@ -603,36 +565,26 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
             "contact with particle " + Foam::name(keys[q].second())
           + " (processor " + Foam::name(keys[q].first()) + ")"
         );
-        const label k = max(label(needed), label(1));
-        need[p] = max(need[p], k);
-        need[q] = max(need[q], k);
-        inCluster[i] = inCluster[j] = true;
-        root[find(i)] = find(j);
+        plan.join(i, j, max(label(needed), label(1)));
     });
 
-    // each cluster's largest need, spread across the processors
+    // each cluster's largest need, spread across the processors: each
+    // processor raises the ghosts to the needs their own processors found,
+    // until no need grows anywhere
     for (bool grown = true; grown; )
     {
-        std::vector<label> clusterNeed(n, 0);
-        for (std::size_t i = 0; i < n; ++i)
+        grown = plan.spread(nOwn);
+        List<label> ownNeeds(nOwn);
+        forAll(ownNeeds, i)
         {
-            clusterNeed[find(i)] = max(clusterNeed[find(i)], need[i]);
+            ownNeeds[i] = plan.need(i);
         }
-        grown = false;
-        for (std::size_t i = 0; i < n; ++i)
-        {
-            grown = grown || (label(i) < nOwn && clusterNeed[find(i)] > need[i]);
-            need[i] = clusterNeed[find(i)];
-        }
-        const List<List<label>> ghostNeed =
-            exchanged(send, SubList<label>(need, nOwn));
+        const List<List<label>> ghostNeed = exchanged(send, ownNeeds);
         forAll(ghostNeed, proc)
         {
             forAll(ghostNeed[proc], k)
             {
-                label& g = need[ghostIndex[proc][k]];
-                grown = grown || ghostNeed[proc][k] > g;
-                g = max(g, ghostNeed[proc][k]);
+                grown = plan.raise(ghostIndex[proc][k], ghostNeed[proc][k]) || grown;
             }
         }
         reduce(grown, orOp<bool>());
@@ -642,7 +594,11 @@ void Foam::RiserWallContact<CloudType>::prepareSubCycles() const
         needs_.set
         (
             keys[i],
-            subCycleNeed{need[i], inCluster[i] || (aloneMeshFree_ && need[i] > 0)}
+            subCycleNeed
+            {
+                label(plan.need(i)),
+                plan.clustered(i) || (aloneMeshFree_ && plan.need(i) > 0)
+            }
         );
     }
 }
@@ -708,7 +664,7 @@ Foam::label Foam::RiserWallContact<CloudType>::nSubCycles() const
     if (pairLaw_.valid())
     {
         Info<< "    riserWallContact: largest pair overlap in this run "
-            << returnReduce(pairOverlapMax_, maxOp<scalar>())
+            << returnReduce(ledger_.pairOverlapMax(), maxOp<scalar>())
             << " of the smaller diameter" << endl;
     }
     return nSub;
@@ -794,27 +750,8 @@ void Foam::RiserWallContact<CloudType>::collidePairs()
             p.torque() += fromCore(c.torqueI);
             q.torque() += fromCore(c.torqueJ);
         }
-        pairOverlapMax_ = max(pairOverlapMax_, geo.overlap/min(p.d(), q.d()));
+        ledger_.pairOverlap(geo.overlap/min(p.d(), q.d()));
     });
-}
-
-
-template<class CloudType>
-void Foam::RiserWallContact<CloudType>::checkInside
-(
-    const labelPair& key,
-    const scalar overlap,
-    const scalar R,
-    const scalar t
-)
-{
-    if (overlap > R && lost_.insert(key))
-    {
-        WarningInFunction
-            << "particle " << key << " has its centre outside the pipe at t = "
-            << t << ": " << overlap - R << " beyond the wall; "
-            << lost_.size() << " particle(s) lost so far" << endl;
-    }
 }
 
 
@@ -847,52 +784,7 @@ Foam::wallContactRecord* Foam::RiserWallContact<CloudType>::wallRecord
     {
         return carried->wall.active || start ? &carried->wall : nullptr;
     }
-    const labelPair key(p.origProc(), p.origId());
-    auto iter = events_.find(key);
-    if (iter.found())
-    {
-        return &(*iter);
-    }
-    if (!start)
-    {
-        return nullptr;
-    }
-    events_.insert(key, wallContactRecord());
-    return &events_[key];
-}
-
-
-template<class CloudType>
-void Foam::RiserWallContact<CloudType>::wallContactGoesOn
-(
-    wallContactRecord& e,
-    const scalar t,
-    const scalar h,
-    const scalar overlap,
-    const vector& F,
-    const scalar normalForce,
-    const vector& Urel,
-    const vector& n,
-    const vector& spin
-)
-{
-    if (!e.active)
-    {
-        e = wallContactRecord();
-        e.active = true;
-        e.start = t - h;
-        e.overlapMax = overlap;
-        e.normalForceMax = normalForce;
-        e.velocityIn = Urel;
-        e.normalSpeedIn = Urel & n;
-        e.spinIn = spin;
-        e.normal = n;
-        e.impulse = h*F;
-        return;
-    }
-    e.overlapMax = max(e.overlapMax, overlap);
-    e.normalForceMax = max(e.normalForceMax, normalForce);
-    e.impulse += h*F;
+    return ledger_.stockRecord(labelPair(p.origProc(), p.origId()), start);
 }
 
 
@@ -912,27 +804,15 @@ void Foam::RiserWallContact<CloudType>::wallContactEnds
     {
         return;
     }
-    const wallContactRecord& e = *record;
-    contactFile()
-        << p.origProc() << ' ' << p.origId() << ' '
-        << e.start << ' ' << t << ' ' << t - e.start << ' '
-        << e.overlapMax << ' ' << e.normalForceMax << ' '
-        << e.velocityIn.x() << ' ' << e.velocityIn.y() << ' '
-        << e.velocityIn.z() << ' '
-        << Uout.x() << ' ' << Uout.y() << ' ' << Uout.z() << ' '
-        << e.spinIn.x() << ' ' << e.spinIn.y() << ' ' << e.spinIn.z() << ' '
-        << spin.x() << ' ' << spin.y() << ' ' << spin.z() << ' '
-        << e.normalSpeedIn << ' ' << -(Uout & n) << ' '
-        << e.impulse.x() << ' ' << e.impulse.y() << ' ' << e.impulse.z()
-        << endl;
-    trace.recordWallContact(e.overlapMax, e.normalSpeedIn);
+    const labelPair key(p.origProc(), p.origId());
+    ledger_.wallContactEnds(key, *record, trace, t, Uout, n, spin);
     if (contactsInProgress* carried = carriedContacts(p))
     {
         carried->wall = wallContactRecord();
     }
     else
     {
-        events_.erase(labelPair(p.origProc(), p.origId()));
+        ledger_.dropStockRecord(key);
     }
 }
 
@@ -1368,7 +1248,7 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
         grains.step(h, exchangeHalo);
         free.step(h);
         const scalar t = t0 + k*h;
-        pairOverlapMax_ = max(pairOverlapMax_, grains.largestPairOverlap());
+        ledger_.pairOverlap(grains.largestPairOverlap());
         forAll(ownGrain, i)
         {
             if (!walls)
@@ -1391,8 +1271,8 @@ Foam::RiserWallContact<CloudType>::meshFreeContacts
             const vector spin = fromCore(g.omega);
             if (c.touching)
             {
-                checkInside(key, c.overlap, g.radius, t);
-                wallContactGoesOn
+                ledger_.checkInside(key, c.overlap, g.radius, t);
+                contactLedger::wallContactGoesOn
                 (
                     *wallRecord(*ownParcel[i], true), t, h, c.overlap, fromCore(c.force),
                     c.normalForce, Urel, nw, spin
@@ -1563,7 +1443,7 @@ void Foam::RiserWallContact<CloudType>::collide()
         const vector Uwall = fromCore(cp.velocity);
         const labelPair key(p.origProc(), p.origId());
 
-        checkInside(key, cp.overlap, Rp, t);
+        ledger_.checkInside(key, cp.overlap, Rp, t);
 
         const vector spin = rotation_ ? p.omega() : vector::zero;
         const scalar overlap = cp.overlap;
@@ -1619,7 +1499,7 @@ void Foam::RiserWallContact<CloudType>::collide()
         trace.wallEnergy = -0.5*dt*(workBefore + c.power);
         addContactTrace(p, trace);
         wallContactRecord& e = *wallRecord(p, true);
-        wallContactGoesOn
+        contactLedger::wallContactGoesOn
         (
             e, t, dt, overlap, F, mag(fromCore(c.law.normal)), p.U() - Uwall, n, spin
         );

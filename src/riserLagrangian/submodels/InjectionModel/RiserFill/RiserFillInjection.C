@@ -6,6 +6,8 @@
 #include "RiserFillInjection.H"
 #include "riserSection.H"
 #include "boundBox.H"
+#include "coreVector.H"
+#include "granular/nearPairs.hpp"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -87,11 +89,14 @@ void Foam::RiserFillInjection<CloudType>::fill()
                 {
                     for (const label j : bins[(jz*nXY + jy)*nXY + jx])
                     {
-                        vector s = x - places[j];
-                        if (periodic)
-                        {
-                            s.z() -= L*std::round(s.z()/L);
-                        }
+                        const vector s =
+                            fromCore
+                            (
+                                riser::nearestImage
+                                (
+                                    toCore(x - places[j]), periodic ? L : 0
+                                )
+                            );
                         const scalar reach = r + 0.5*diameters[j] + gap;
                         if (magSqr(s) < reach*reach)
                         {
