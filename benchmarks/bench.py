@@ -524,7 +524,7 @@ class Bench:
         key = "riserFrameBasset"
         # one more particle 0.05 mm from the wall: closer than it can travel
         # in a step (|U_p| dt = 0.068 mm; the riser frame's wall stands
-        # still), so riserWallContact sub-cycles every step for it
+        # still), so riserContact sub-cycles every step for it
         gap = 5e-5
         near = [(rc.R - 0.5 * rc.PARTICLE_D - gap, 0.0, 0.25)]
         self.say("suite contact (static mesh, riser frame): N = %d, with and without one "

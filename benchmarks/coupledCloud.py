@@ -9,7 +9,7 @@ turbulent carrier of kOmegaSST with wall functions
 (riser frame); ores of d = 10 mm (2000 kg/m^3) fill the section at C_v =
 0.05 (riserFill, seed 1, at rest relative to the carrier: about 375 ores),
 forces wallCorrectedDrag, riserFluidStress, riserFrame and gravity, wall
-and pair contact (riserWallContact with pairs, the coefficients of the
+and pair contact (riserContact with pairs, the coefficients of the
 tutorial riser/oreTransport, stepsPerContact 10); dt = 5e-4 s; PIMPLE with
 1 outer and 2 pressure correctors, p by PCG/DIC to 1e-7 (relTol 0.01 in the
 first corrector), U, k, omega by symGaussSeidel to 1e-7 (relTol 0.1 in the

@@ -1,5 +1,5 @@
 """A shaken cloud of 1,000 ores in riserParcelFoam without contact, with
-wall contact only and with particle-particle contact (riserWallContact's
+wall contact only and with particle-particle contact (riserContact's
 pairs): the scenes of the many-ore work. 10 mm ores (2000 kg/m^3, the
 flagship's material) fill a 1 m periodic riser section (D = 0.1 m,
 riserMesh -n 12, cyclic ends) at C_v = 0.0667 (riserFill, seed 1, at rest
@@ -20,7 +20,7 @@ at the start and the end, particles reported outside the pipe, the largest
 number of particles near a contact in a step, of tracked sub-cycles and of
 particles sub-stepped without the mesh and their contact sub-steps, with
 pairs the largest pair overlap of the run (fraction of d; the log's
-riserWallContact line), the completed wall contacts, the time average of
+riserContact line), the completed wall contacts, the time average of
 the fraction of ores in wall contact (their durations summed over the
 ores and the run) and the contacts' mean restitution UnOut/UnIn
 (contacts.dat): what aloneAtWall meshFree changes in the physics, against
@@ -67,10 +67,10 @@ PAIRS = "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.5; }"
 # variant: collision model, pairs, aloneAtWall
 VARIANTS = {
     "none": ("none", None, None),
-    "wall": ("riserWallContact", None, "tracked"),
-    "wall, alone meshFree": ("riserWallContact", None, "meshFree"),
-    "wall+pairs": ("riserWallContact", PAIRS, "tracked"),
-    "wall+pairs, alone meshFree": ("riserWallContact", PAIRS, "meshFree"),
+    "wall": ("riserContact", None, "tracked"),
+    "wall, alone meshFree": ("riserContact", None, "meshFree"),
+    "wall+pairs": ("riserContact", PAIRS, "tracked"),
+    "wall+pairs, alone meshFree": ("riserContact", PAIRS, "meshFree"),
 }
 # scene: riser amplitude [m] and frequency [Hz]
 SCENES = {"A0.2_f4": (0.2, 4.0), "A2_f0.4": (2.0, 0.4)}
@@ -93,12 +93,12 @@ def make(case, end, A, f, collision, pairs, alone="tracked", L=1.0, n=12, nz=Non
               " solidsFraction %g; seed 1; velocity carrier;"
               " sizeDistribution { type fixedValue; fixedValueDistribution { value 0.01; } } } }"
               % Cv)
-    ff.set_nested(cloud, "subModels/riserWallContactCoeffs/stepsPerContact", "10")
+    ff.set_nested(cloud, "subModels/riserContactCoeffs/stepsPerContact", "10")
     ff.set_nested(cloud, "subModels/collisionModel", collision)
     if pairs:
-        ff.set_nested(cloud, "subModels/riserWallContactCoeffs/pairs", pairs)
+        ff.set_nested(cloud, "subModels/riserContactCoeffs/pairs", pairs)
     if alone:
-        ff.set_nested(cloud, "subModels/riserWallContactCoeffs/aloneAtWall", alone)
+        ff.set_nested(cloud, "subModels/riserContactCoeffs/aloneAtWall", alone)
 
 
 def stamped(**entries):
@@ -254,7 +254,7 @@ def run(case):
     sub = [int(c) for c in re.findall(r"(\d+) move-collide subCycles", text)] or [1]
     clustered = re.findall(r"(\d+) particle\(s\) in clusters or alone at the wall: (\d+)"
                            r" contact sub-steps", text)
-    contacts = os.path.join(case, "postProcessing/lagrangian/kinematicCloud/riserWallContact",
+    contacts = os.path.join(case, "postProcessing/lagrangian/kinematicCloud/riserContact",
                             "contacts.dat")
     restitution = None
     if os.path.exists(contacts):

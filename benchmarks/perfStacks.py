@@ -68,7 +68,7 @@ OURS = ("riser::", "Foam::carrierFlow", "Foam::Riser", "Foam::WallCorrectedDrag"
 EVOLVE_RULES = [
     ("Foam::KinematicParcel<>::trackingData::trackingData<>",
      "interpolation set-up: cellPoint point field of U (volPointInterpolation)"),
-    ("Foam::RiserWallContact<>", "wall contact (riserWallContact)"),
+    ("Foam::RiserContact<>", "wall contact (riserContact)"),
     ("Foam::CloudFunctionObjectList<>", "cloud functions (riserParticleTable, particleForceFields)"),
     ("Foam::ParticleForceList<>", "particle forces"),
     ("Foam::Cloud<>::move<>", "tracking and the stock parcel (move, calc)"),

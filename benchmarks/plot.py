@@ -212,7 +212,7 @@ def summary(res, a):
         c = res["suites"]["contact"]
         lines += ["## 5. What one particle at the wall costs the cloud (riser frame, full physics)", "",
                   "N = %d particles away from the wall, with and without one more particle %.2f mm "
-                  "from it (riserWallContact then sub-cycles the step), %d steps, %d repeats%s." % (
+                  "from it (riserContact then sub-cycles the step), %d steps, %d repeats%s." % (
                       c["N"], 1e3 * c["nearWallGap_m"], c["steps"], c["repeats"], when(c)), "",
                   "| cloud | ms/step (CPU) | sub-cycles per step |",
                   "|---|---:|---:|",

@@ -12,7 +12,7 @@ steps, for
   - riserParcelFoam with the paper's forces (wallCorrectedDrag,
     riserSaffmanMeiLift, riserAddedMass, riserFluidStress, riserFrame,
     gravity), optionally riserBasset (windowTail), and the wall contact
-    riserWallContact, in the lab frame (moving mesh) or the riser frame
+    riserContact, in the lab frame (moving mesh) or the riser frame
     (static mesh).
 
 No per-particle output: no cloud function objects in any case.
@@ -162,8 +162,8 @@ STOCK_PAIR_COLLISION = """    collisionModel  pairCollision;
     }
 """
 
-RISER_COLLISION = """    collisionModel  riserWallContact;
-    riserWallContactCoeffs
+RISER_COLLISION = """    collisionModel  riserContact;
+    riserContactCoeffs
     {
         wall { youngsModulus 2e11; poissonsRatio 0.3; }
         normalRestitution       0.76;
@@ -275,7 +275,7 @@ interpolationSchemes { default linear; }
 class Variant:
     """One solver with one set of models, in one frame.
 
-    collision: None (riserWallContact for ours, none for stock) or "pair"
+    collision: None (riserContact for ours, none for stock) or "pair"
                (stock pairCollision: particle-particle and wall contact)
 
     solver:  'stock' or 'riser'

@@ -215,7 +215,7 @@ def wall_contact_case(case, D, radius, rho, E, nu, wall_E, wall_nu, e_n, e_t, mu
                       velocities, rotation=False, dt=1e-5, end=2e-4,
                       steps_per_contact=400, normal_force="tensionAllowed", positions=None,
                       pairs=None, diameters=None):
-    """A case in which particles fly at the riser wall of the riserWallContact
+    """A case in which particles fly at the riser wall of the riserContact
     model with no fluid forces (the sphere-wall benchmarks of Chung & Ooi
     2011 through the OpenFOAM wall model), run by icoUncoupledKinematicParcelFoam.
 
@@ -321,8 +321,8 @@ subModels
     standardWallInteractionCoeffs { type rebound; }
     surfaceFilmModel none;
     stochasticCollisionModel none;
-    collisionModel riserWallContact;
-    riserWallContactCoeffs
+    collisionModel riserContact;
+    riserContactCoeffs
     {
         wall { youngsModulus %(wE).17g; poissonsRatio %(wnu).17g; }
         normalRestitution %(en).17g;
@@ -363,10 +363,10 @@ boundaryField
 
 
 def wall_contacts(case):
-    """riserWallContact's completed contacts in case, in the order they
+    """riserContact's completed contacts in case, in the order they
     ended (Table: origProc origId tStart tEnd duration overlapMax ...)"""
     return tables.read(os.path.join(case, "postProcessing/lagrangian/kinematicCloud/"
-                                    "riserWallContact/contacts.dat"))
+                                    "riserContact/contacts.dat"))
 
 
 # ------------------------------------------------- the computed carrier
@@ -572,7 +572,7 @@ def poiseuille_start(case, riser, frame, wall, mu):
 
 def flagship_contact():
     """The wall contact of the flagship tutorial (riser/oscillatingContact):
-    its collisionModel line and riserWallContactCoeffs block, as text"""
+    its collisionModel line and riserContactCoeffs block, as text"""
     path = os.path.join(ROOT, "tutorials", "riser", "oscillatingContact", "constant",
                         "kinematicCloudProperties")
     text = open(path).read()
@@ -609,7 +609,7 @@ def dense_shaken_section(case, end, write_interval=None, alone_at_wall="meshFree
     ff.set_nested(cloud, "cloudFunctions", "{}")
     ff.set_nested(cloud, "subModels/injectionModels", "{ %s }" % fill_injection(0.15, d=0.01))
     ff.set_nested(cloud, "constantProperties/youngsModulus", "1e7")
-    coeffs = "subModels/riserWallContactCoeffs/"
+    coeffs = "subModels/riserContactCoeffs/"
     ff.set_nested(cloud, coeffs + "wall/youngsModulus", "1e7")
     ff.set_nested(cloud, coeffs + "stepsPerContact", "10")
     ff.set_nested(cloud, coeffs + "aloneAtWall", alone_at_wall)

@@ -12,7 +12,7 @@ compares, for the cloud kinematicCloud:
     column's largest magnitude (at least 1e-11: the table has 12 digits),
     the lifting distance among them, except origProc (the processor that
     injected the particle, 0 in a serial run);
-  - the contact tables (riserWallContact/contacts.dat), when the whole run
+  - the contact tables (riserContact/contacts.dat), when the whole run
     has one: the same number of contacts, their start and end times within
     <tolerance> relative to the time;
   - the particles' wall-contact counts written at <time> (wallContacts),
@@ -78,11 +78,11 @@ def table_difference(whole, other, tolerance):
 
 def contact_difference(whole, other):
     """Largest relative difference of the contacts' start and end times."""
-    path = output(whole, "riserWallContact", "contacts")
+    path = output(whole, "riserContact", "contacts")
     if not os.path.exists(path):
         return 0.0, 0
     a = tables.read(path)
-    b = tables.read(output(other, "riserWallContact", "contacts"))
+    b = tables.read(output(other, "riserContact", "contacts"))
     if len(a) != len(b):
         raise AssertionError("contacts.dat: %d contacts, %d in the whole run" % (len(b), len(a)))
     worst = 0.0

@@ -173,8 +173,8 @@ def riser_forces(voidage):
 RISER_WEN_YU_FORCES = riser_forces("wenYu")
 RISER_RONG_FORCES = riser_forces("rong")
 
-CONTACTS = """    collisionModel riserWallContact;
-    riserWallContactCoeffs
+CONTACTS = """    collisionModel riserContact;
+    riserContactCoeffs
     {
         wall { youngsModulus 2e11; poissonsRatio 0.3; }
         normalRestitution 0.76; tangentialRestitution 0.7; friction 0.2;
@@ -190,7 +190,7 @@ def settling_case(case, d, D, L, n, nz, cv, dt, end, write_every, kernel, seed=1
     fraction cv (riserFill, at rest with the carrier), water at rest, the
     carrier's flow rate held at zero by the drive, no-slip wall; the ores'
     forces (default: the Wen & Yu drag and the buoyant weight), contacts
-    (default: riserWallContact with pairs, ores of Young's modulus E) and
+    (default: riserContact with pairs, ores of Young's modulus E) and
     kernel (text of the kernel's entries); written every write_every
     steps"""
     injection = cases.fill_injection(cv, d, seed)

@@ -1,7 +1,7 @@
 """The library's text tables, read by column name.
 
 The format (written by the C++ code: riserParticleTable's and
-riserParticle's particles.dat, the contacts.dat of riserWallContact and of
+riserParticle's particles.dat, the contacts.dat of riserContact and of
 riserParticle, riserParticle's sweep.dat and budget.dat, riserCarrierError's
 errors.dat, the validation programs' tables): plain text, one row a line,
 fields separated by white space; comment lines start with '#'. The last

@@ -70,8 +70,8 @@ $injector
     patchInteractionModel $interaction
     surfaceFilmModel none;
     stochasticCollisionModel none;
-    collisionModel  riserWallContact;
-    riserWallContactCoeffs
+    collisionModel  riserContact;
+    riserContactCoeffs
     {
         wall { youngsModulus 2e11; poissonsRatio 0.3; }
         normalRestitution       0.76;

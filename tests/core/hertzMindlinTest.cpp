@@ -184,7 +184,7 @@ TEST(HertzMindlin, TangentialStickAndSlide)
 // e_n = 0.98), with e_t in {0.05, 0.7, 1} and the particle rotating,
 // |F_t| <= mu_c |F_n| to 1e-12 relative (the round-off of the rescaling).
 // The impacts are integrated by the test (symplectic Euler, 2000 steps per
-// contact time, the tangential spring accumulated as riserWallContact
+// contact time, the tangential spring accumulated as riserContact
 // does); the law supplies the forces. The test also checks that the cap is
 // reached (some sub-steps slide) and that the dashpot alone, which the
 // earlier spring-only cap left unbounded, would exceed it at e_t = 0.05.

@@ -6,7 +6,7 @@ section, water (1000 kg/m^3, 1e-6 m^2/s) at rest, ores of 2000 kg/m^3
 filled at C_v by riserFill, at rest; the drive holds the carrier's flow
 rate at zero (the slip does not depend on the frame: batch settling and
 fluidisation are the same suspension in a periodic section); no-slip wall;
-wall and pair contact (riserWallContact with pairs, ores of E = 1e8 Pa:
+wall and pair contact (riserContact with pairs, ores of E = 1e8 Pa:
 soft, so that a contact spans ~100 sub-steps; a run at C_v = 0.1 without
 contacts gave the same slip to 4 digits); core cells of h = d; dt = 1 ms.
 - "1mm": d = 1 mm, D = 25 mm (d/D = 0.04), L = 10 mm, 10 cells across

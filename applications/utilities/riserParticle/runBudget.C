@@ -147,7 +147,7 @@ void Foam::runBudget
     os.precision(6);
     os  << "# riserParticle force budget, particle 0, integrator " << integ.name
         << ", to t = " << scene.endTime << " s; buoyant weight " << weight << " N" << nl
-        << "# riserWallContact: the time mean of its normal force from the"
+        << "# riserContact: the time mean of its normal force from the"
         << " impulses, and its elastic peak k_n delta_max^(3/2)" << nl
         << "# force rms/W max/W dropped:liftChange/D dropped:largestTrajectoryChange/D"
         << " dropped:cpu/full (full model: " << fullCpu << " s, lift "
@@ -171,7 +171,7 @@ void Foam::runBudget
                 continue;
             }
             scalar worst = 0;
-            forAll(d.rows, i)
+            for (std::size_t i = 0; i < d.rows.size(); ++i)
             {
                 worst = max(worst, scalar((d.rows[i] - full.rows[i]).norm()));
             }

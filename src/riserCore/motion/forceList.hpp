@@ -32,7 +32,7 @@ inline constexpr std::array<Force, nForces> allForces =
 inline constexpr std::array<const char*, nForces> forceNames =
 {
     "wallCorrectedDrag", "riserSaffmanMeiLift", "riserAddedMass", "riserFluidStress",
-    "gravity", "riserWallContact"
+    "gravity", "riserContact"
 };
 
 inline const char* forceName(Force f) { return forceNames[int(f)]; }

@@ -10,7 +10,7 @@ d = 1 mm and 2000 kg/m^3 (C_v = 0.1004) filled at rest by riserFill,
 settling under gravity while the drive holds the carrier's flow rate at
 zero; no-slip wall; forces WenYuDrag (Wen & Yu 1966 as the stock cloud
 writes it, with the pressure gradient's share: no fluid stress force) and
-the buoyant weight; wall and pair contact (riserWallContact with pairs);
+the buoyant weight; wall and pair contact (riserContact with pairs);
 kernel { type diffusion; width 6; widthUnit diameters; }; dt = 1 ms,
 0.3 s, measured over (0.15, 0.3] s. u_t = 0.1124 m/s (Schiller-Naumann,
 unbounded), Re_t = 112, d/D = 0.04. Checked:

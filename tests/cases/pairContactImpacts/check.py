@@ -1,4 +1,4 @@
-"""Head-on impacts of two particles through riserWallContact's pair contact;
+"""Head-on impacts of two particles through riserContact's pair contact;
 see run."""
 import math
 import os

@@ -1,4 +1,4 @@
-"""riserWallContact's options aloneAtWall and wallContact in the riser cloud
+"""riserContact's options aloneAtWall and wallContact in the riser cloud
 (riserParcelFoam); see run."""
 import math
 import os
@@ -9,7 +9,7 @@ from riserfoam.checks import Checks
 checks = Checks()
 check = checks.near
 RISER = "riserParcelFoam"
-COEFFS = "subModels/riserWallContactCoeffs"
+COEFFS = "subModels/riserContactCoeffs"
 
 
 def add_coeff(case, entry, value):

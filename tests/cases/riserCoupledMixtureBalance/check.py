@@ -38,7 +38,7 @@ carrier: negative along an upward flow), weighted by alpha_c on the wall
 in time by the trapezoid over the write times (every 20 steps; run by
 pimpleFoam -postProcess on the written U: wallShearStress does not find
 the phase-weighted turbulence model of riserCoupledFoam); F_ores = -sum
-J_z/T over the contacts of riserWallContact's contacts.dat that ended
+J_z/T over the contacts of riserContact's contacts.dat that ended
 in the window (J: each contact's impulse of the wall's force). dp/dz is
 the drive's, averaged over the window's steps (drive.dat). The window,
 0.4 to 1.2 s, is two riser periods after one of start-up, so that the

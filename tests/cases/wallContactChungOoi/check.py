@@ -1,4 +1,4 @@
-"""Chung & Ooi (2011) tests 2, 3 and 4 through riserWallContact; see run."""
+"""Chung & Ooi (2011) tests 2, 3 and 4 through riserContact; see run."""
 import math
 import os
 import sys
@@ -113,7 +113,7 @@ try:
               ("final_angular_velocity_rad_per_s", 1, -1, "final spin [rad/s] (paper's sign)"),
               ("rebound_angle_at_contact_point_deg", 3, 1, "rebound angle at contact point [deg]")]
     for ax, (key, col, sign, label) in zip(axes, panels):
-        ax.plot(angles, [sign * r[col] for r in results], "o-", ms=4, label="riserWallContact")
+        ax.plot(angles, [sign * r[col] for r in results], "o-", ms=4, label="riserContact")
         if key in published:
             ax.plot(*zip(*published[key]), "k--", lw=1, label="Chung & Ooi (2011)")
         ax.set_xlabel("incident angle from the normal [deg]")

@@ -14,7 +14,7 @@ Writes <prefix>_track3d.png (the particle tracks relative to the riser
 axis, inside the riser wall, in 3-D; ParaView is not installed by the
 project's scripts, so this stands in for a rendered picture), <prefix>_motion.png (lateral position with the riser walls, relative
 lateral velocity, vertical velocity, lifting distance) and, when the wall
-contact wrote contacts (riserWallContact/contacts.dat beside the table's
+contact wrote contacts (riserContact/contacts.dat beside the table's
 folder), <prefix>_contacts.png: each contact's largest normal overlap and
 normal force, and the velocity relative to the wall before and after.
 (A contact lasts tens of microseconds, far less than a flow step: the
@@ -41,10 +41,14 @@ from riserfoam.carrier import Riser  # noqa: E402
 
 
 def contacts_of(path):
-    """riserWallContact's contacts.dat beside the table's folder, or None"""
-    found = os.path.join(os.path.dirname(os.path.dirname(path)), "riserWallContact",
-                         "contacts.dat")
-    return tables.read(found) if os.path.exists(found) else None
+    """riserContact's contacts.dat beside the table's folder (under the
+    model's old name riserWallContact in a case that selects it), or None"""
+    for model in ("riserContact", "riserWallContact"):
+        found = os.path.join(os.path.dirname(os.path.dirname(path)), model,
+                             "contacts.dat")
+        if os.path.exists(found):
+            return tables.read(found)
+    return None
 
 
 def summary(label, table, path, D):

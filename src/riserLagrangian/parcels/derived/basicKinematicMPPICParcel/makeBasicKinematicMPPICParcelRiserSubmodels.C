@@ -6,7 +6,7 @@ Description
     Registers the riser forces and the riser injection models for the stock MPPIC cloud
     basicKinematicMPPICCloud, so that MPPICFoam and MPPICDyMFoam find them
     after libs ("libriserLagrangian.so"); in system/controlDict. The cloud
-    does not collide: riserWallContact and riserParticleTable are not
+    does not collide: riserContact and riserParticleTable are not
     available for it (makeRiserSubmodels.H).
 
 \*---------------------------------------------------------------------------*/

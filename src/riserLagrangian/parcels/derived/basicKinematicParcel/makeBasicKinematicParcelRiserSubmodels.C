@@ -7,7 +7,7 @@ Description
     basicKinematicCloud, so that uncoupledKinematicParcelFoam and
     uncoupledKinematicParcelDyMFoam find them after
     libs ("libriserLagrangian.so"); in system/controlDict. The cloud does
-    not collide: riserWallContact and riserParticleTable are not available
+    not collide: riserContact and riserParticleTable are not available
     for it (makeRiserSubmodels.H).
 
 \*---------------------------------------------------------------------------*/

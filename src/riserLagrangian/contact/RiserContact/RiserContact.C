@@ -1,0 +1,538 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "RiserContact.H"
+#include "modelEntries.H"
+#include "coreVector.H"
+#include "HistoryParcel.H"
+#include "granular/nearPairs.hpp"
+#include "granular/granularSystem.hpp"
+#include "granular/clusterPlan.hpp"
+#include "UIPstream.H"
+#include "UOPstream.H"
+
+#include <algorithm>
+#include <cmath>
+
+#include <numeric>
+#include <vector>
+
+// * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
+
+template<class CloudType>
+Foam::autoPtr<riser::HertzMindlin>
+Foam::RiserContact<CloudType>::readWallLaw() const
+{
+    if (!modelEntries::wallContactOn(this->coeffDict()))
+    {
+        return nullptr;
+    }
+    return autoPtr<riser::HertzMindlin>
+    (
+        new riser::HertzMindlin
+        (
+            modelEntries::contactParameters
+            (
+                this->coeffDict(), this->owner().constProps().dict()
+            )
+        )
+    );
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserContact<CloudType>::readAddedMassCoeff() const
+{
+    typedef typename CloudType::kinematicCloudType kinematicCloudType;
+    scalar CA = 0;
+    for (const auto& force : this->owner().forces())
+    {
+        if (force.type() == "virtualMass")
+        {
+            FatalErrorInFunction
+                << "particle force virtualMass with collisionModel "
+                << typeName << ": the wall contact accelerates m_p + C_A m_f"
+                << " with the C_A of riserAddedMass; replace virtualMass by"
+                << " riserAddedMass { CA 0.5; }" << exit(FatalError);
+        }
+        const auto* addedMass =
+            dynamic_cast<const RiserAddedMassForce<kinematicCloudType>*>(&force);
+        if (addedMass)
+        {
+            CA = addedMass->CA();
+        }
+    }
+    return CA;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserContact<CloudType>::effectiveMass
+(
+    const parcelType& p
+) const
+{
+    const scalar m = p.mass();
+    return m + addedMassCoeff_*m*this->owner().rho()[p.cell()]/p.rho();
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::RiserContact<CloudType>::RiserContact
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    RiserContact(dict, owner, typeName)
+{}
+
+
+template<class CloudType>
+Foam::RiserContact<CloudType>::RiserContact
+(
+    const dictionary& dict,
+    CloudType& owner,
+    const word& type
+)
+:
+    CollisionModel<CloudType>(dict, owner, type),
+    carrier_(carrierFlow::ofCloud(owner)),
+    wallLaw_(readWallLaw()),
+    rotation_(this->coeffDict().lookupOrDefault("rotation", Switch(false))),
+    stepsPerContact_
+    (
+        checkedEntry::count(this->coeffDict(), "stepsPerContact", 10, 10000, 40)
+    ),
+    maxSubCycles_
+    (
+        checkedEntry::count(this->coeffDict(), "maxSubCycles", 1, 100000000, 100000)
+    ),
+    aloneMeshFree_
+    (
+        this->coeffDict().found("aloneAtWall")
+     && checkedEntry::choice<bool>
+        (
+            this->coeffDict(), "aloneAtWall", {{"tracked", false}, {"meshFree", true}}
+        )
+    ),
+    addedMassCoeff_(readAddedMassCoeff()),
+    section_(riserSection(owner.mesh())),
+    cellAxisDistance_
+    (
+        owner.mesh().changing() ? scalarField() : cellAxisDistances(owner.mesh())
+    ),
+    ledger_(owner.mesh(), owner.name(), type)
+{
+    if (this->coeffDict().found("pairs"))
+    {
+        pairLaw_.reset
+        (
+            new riser::HertzMindlin
+            (
+                modelEntries::pairContactParameters
+                (
+                    this->coeffDict(), this->owner().constProps().dict()
+                )
+            )
+        );
+    }
+
+    // the riser must exist: FatalError here rather than at the first step
+    carrier_.riser();
+    if (riserCloud)
+    {
+        // the riser cloud moves its particles by the needs of this model
+        this->announce(&owner);
+    }
+
+    Info<< "    riserContact: wall contact ";
+    if (wallLaw_.valid())
+    {
+        Info<< "(normal damping ratio " << wallLaw_->normalDampingRatio()
+            << ", particles alone at the wall "
+            << (aloneMeshFree_ ? "sub-stepped without the mesh" : "tracked")
+            << ")";
+    }
+    else
+    {
+        Info<< "off";
+    }
+    Info<< ", pair contact " << (pairLaw_.valid() ? "on" : "off")
+        << ", rotation " << rotation_
+        << ", inertia m_p + " << addedMassCoeff_ << " m_f" << endl;
+}
+
+
+template<class CloudType>
+Foam::RiserContact<CloudType>::RiserContact
+(
+    const RiserContact<CloudType>& cm
+)
+:
+    CollisionModel<CloudType>(cm),
+    localSubCycling<parcelType>(cm),
+    carrier_(cm.carrier_),
+    wallLaw_(cm.wallLaw_.valid() ? new riser::HertzMindlin(cm.wallLaw_()) : nullptr),
+    rotation_(cm.rotation_),
+    stepsPerContact_(cm.stepsPerContact_),
+    maxSubCycles_(cm.maxSubCycles_),
+    aloneMeshFree_(cm.aloneMeshFree_),
+    addedMassCoeff_(cm.addedMassCoeff_),
+    pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
+    needs_(cm.needs_),
+    section_(cm.section_),
+    cellAxisDistance_(cm.cellAxisDistance_),
+    ledger_(cm.ledger_)
+{}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::RiserContact<CloudType>::checkCloudRunsThis() const
+{
+    if (aloneMeshFree_ && !riserCloud)
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "entry 'aloneAtWall' = meshFree with a stock colliding cloud:"
+            << " only the riser cloud (riserParcelFoam) sub-steps particles"
+            << " without the mesh; remove it or set tracked"
+            << exit(FatalIOError);
+    }
+    if (pairLaw_.valid() && Pstream::parRun() && !riserCloud)
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "entry 'pairs' (particle-particle contact) in a parallel run"
+            << " of a stock colliding cloud: across processor boundaries"
+            << " pairs are handled by the riser cloud (riserParcelFoam)"
+            << " only; run serially or with riserParcelFoam"
+            << exit(FatalIOError);
+    }
+}
+
+
+template<class CloudType>
+const typename Foam::RiserContact<CloudType>::subCycleNeed&
+Foam::RiserContact<CloudType>::need(const parcelType& p) const
+{
+    const auto iter = needs_.cfind(labelPair(p.origProc(), p.origId()));
+    if (!iter.found())
+    {
+        FatalErrorInFunction
+            << "particle " << p.origId() << " (processor " << p.origProc()
+            << ") was not in the cloud when its need of sub-cycles was"
+            << " prepared" << exit(FatalError);
+    }
+    return *iter;
+}
+
+
+template<class CloudType>
+Foam::label Foam::RiserContact<CloudType>::subCycles(const parcelType& p) const
+{
+    return max(need(p).n, label(1));
+}
+
+
+template<class CloudType>
+bool Foam::RiserContact<CloudType>::meshFree(const parcelType& p) const
+{
+    return need(p).meshFree;
+}
+
+
+template<class CloudType>
+Foam::label Foam::RiserContact<CloudType>::nSubCycles() const
+{
+    // the riser cloud prepared the needs of the step's start (a group of
+    // them is moving now); a stock colliding cloud asks here first
+    if (preparedIndex_ != this->owner().mesh().time().timeIndex())
+    {
+        prepareSubCycles();
+    }
+    label nSub = 1, nNear = 0;
+    for (const parcelType& p : this->owner())
+    {
+        const label n = need(p).n;
+        if (n > 0)
+        {
+            ++nNear;
+            nSub = max(nSub, n);
+        }
+    }
+    reduce(nSub, maxOp<label>());
+    reduce(nNear, sumOp<label>());
+
+    if (nNear)
+    {
+        Info<< "    riserContact: " << nNear << " particle(s) near "
+            << (pairLaw_.valid() ? "a contact" : "the wall") << endl;
+    }
+    if (pairLaw_.valid())
+    {
+        Info<< "    riserContact: largest pair overlap in this run "
+            << returnReduce(ledger_.pairOverlapMax(), maxOp<scalar>())
+            << " of the smaller diameter" << endl;
+    }
+    return nSub;
+}
+
+
+template<class CloudType>
+riser::ContactSide Foam::RiserContact<CloudType>::contactSide
+(
+    const parcelType& p
+) const
+{
+    return riser::ContactSide
+    {
+        toCore(p.U()),
+        rotation_ ? toCore(p.omega()) : riser::Vector::Zero(),
+        0.5*p.d()
+    };
+}
+
+
+template<class CloudType>
+void Foam::RiserContact<CloudType>::collidePairs()
+{
+    const scalar dt = this->owner().mesh().time().deltaTValue();
+
+    std::vector<parcelType*> parcels;
+    std::vector<riser::Vector> x;
+    parcels.reserve(this->owner().size());
+    x.reserve(this->owner().size());
+    scalar rMax = 0;
+    for (parcelType& p : this->owner())
+    {
+        parcels.push_back(&p);
+        x.push_back(toCore(p.position()));
+        rMax = max(rMax, 0.5*p.d());
+    }
+    if (parcels.size() < 2)
+    {
+        return;
+    }
+
+    forEachNearPair(x, 2*rMax, [&](std::size_t a, std::size_t b, scalar dz)
+    {
+        // the pair in a fixed order, so that the spring is read in one frame
+        const bool aFirst =
+            labelPair(parcels[a]->origProc(), parcels[a]->origId())
+          < labelPair(parcels[b]->origProc(), parcels[b]->origId());
+        parcelType& p = aFirst ? *parcels[a] : *parcels[b];
+        parcelType& q = aFirst ? *parcels[b] : *parcels[a];
+        // q's image nearest to p
+        const riser::Vector image(0, 0, aFirst ? dz : -dz);
+        const scalar Rp = 0.5*p.d(), Rq = 0.5*q.d();
+        const riser::PairGeometry geo =
+            riser::pairGeometry
+            (
+                toCore(p.position()), Rp, toCore(q.position()) + image, Rq
+            );
+        if (geo.overlap <= 0)
+        {
+            return;
+        }
+        // the spring in p's frame (n from p to q); q keeps its negative
+        vector& spring =
+            p.collisionRecords().matchPairRecord(q.origProc(), q.origId()).collisionData();
+        const scalar mp = effectiveMass(p), mq = effectiveMass(q);
+        const riser::ContactStep c =
+            riser::stepContact
+            (
+                *pairLaw_, riser::pairBody(Rp, mp, Rq, mq), geo.overlap, geo.normal,
+                contactSide(p), contactSide(q), toCore(spring), dt
+            );
+        spring = fromCore(c.law.springAfter);
+        q.collisionRecords().matchPairRecord(p.origProc(), p.origId()).collisionData() =
+            -spring;
+
+        const vector F = fromCore(c.force);
+        // each parcel divides f by its m_p: the force on m_p + C_A m_f
+        p.f() += (p.mass()/mp)*F;
+        q.f() -= (q.mass()/mq)*F;
+        if (rotation_)
+        {
+            p.torque() += fromCore(c.torqueI);
+            q.torque() += fromCore(c.torqueJ);
+        }
+        ledger_.pairOverlap(geo.overlap/min(p.d(), q.d()));
+    });
+}
+
+
+template<class CloudType>
+Foam::wallContactRecord* Foam::RiserContact<CloudType>::wallRecord
+(
+    parcelType& p,
+    const bool start
+)
+{
+    if (contactsInProgress* carried = carriedContacts(p))
+    {
+        return carried->wall.active || start ? &carried->wall : nullptr;
+    }
+    return ledger_.stockRecord(labelPair(p.origProc(), p.origId()), start);
+}
+
+
+template<class CloudType>
+void Foam::RiserContact<CloudType>::wallContactEnds
+(
+    parcelType& p,
+    contactTrace& trace,
+    const scalar t,
+    const vector& Uout,
+    const vector& n,
+    const vector& spin
+)
+{
+    const wallContactRecord* record = wallRecord(p);
+    if (!record)
+    {
+        return;
+    }
+    const labelPair key(p.origProc(), p.origId());
+    ledger_.wallContactEnds(key, *record, trace, t, Uout, n, spin);
+    if (contactsInProgress* carried = carriedContacts(p))
+    {
+        carried->wall = wallContactRecord();
+    }
+    else
+    {
+        ledger_.dropStockRecord(key);
+    }
+}
+
+
+template<class CloudType>
+void Foam::RiserContact<CloudType>::collide()
+{
+    const Time& time = this->owner().mesh().time();
+    const riser::Wall& wall = carrier_.wall();
+    const scalar t = time.value();
+    const scalar dt = time.deltaTValue();
+    checkMeshUnchanged();
+    const scalar axisOffset = mag(carrier_.riser().motion().axisPosition(t));
+
+    for (parcelType& p : this->owner())
+    {
+        // no wall contact, or certainly apart from the wall and in no wall
+        // contact that might end now: no wall force, nothing to record
+        if
+        (
+            !wallLaw_.valid()
+         || (
+                clearOfWall(p, axisOffset, 0)
+             && !wallRecord(p)
+            )
+        )
+        {
+            p.f() = Zero;
+            p.torque() = Zero;
+            continue;
+        }
+
+        // the contact force the previous sub-cycle left, on the effective
+        // inertia (the start of this sub-cycle's dissipation trapezoid)
+        const scalar mEff = effectiveMass(p);
+        const vector Fprev = (mEff/p.mass())*p.f();
+        p.f() = Zero;
+        p.torque() = Zero;
+
+        const scalar Rp = 0.5*p.d();
+        const riser::ContactPoint cp = wall.contactPoint(toCore(p.position()), Rp, t);
+        const vector Uwall = fromCore(cp.velocity);
+        const labelPair key(p.origProc(), p.origId());
+
+        ledger_.checkInside(key, cp.overlap, Rp, t);
+
+        const vector spin = rotation_ ? p.omega() : vector::zero;
+        const scalar overlap = cp.overlap;
+        const vector n = fromCore(cp.normal);
+
+        // F_prev's part of the trapezoid, with its own evaluation's normal
+        // and wall velocity (those of now for a contact in progress not
+        // recorded: a stock parcel's at a restart, or a cloud written
+        // without its contacts in progress)
+        const wallContactRecord* event = wallRecord(p);
+        const vector nPrev = event ? event->normal : n;
+        const vector UwallPrev = event ? event->wallVelocity : Uwall;
+        const scalar workBefore =
+            Fprev
+          & fromCore
+            (
+                riser::contactVelocity
+                (
+                    contactSide(p), riser::wallSide(toCore(UwallPrev)), toCore(nPrev)
+                )
+            );
+
+        if (overlap <= 0)
+        {
+            contactTrace trace;
+            trace.wallEnergy = -0.5*dt*workBefore;
+            wallContactEnds(p, trace, t, p.U() - Uwall, n, spin);
+            addContactTrace(p, trace);
+            // no record accessed: update() below drops the tangential spring
+            continue;
+        }
+
+        // the tangential spring, kept in the current tangent plane
+        vector& spring =
+            p.collisionRecords().matchWallRecord(0.99*Rp*n, Rp).collisionData();
+        const riser::ContactStep c =
+            riser::stepContact
+            (
+                *wallLaw_, riser::ContactBody(Rp, mEff), overlap, toCore(n),
+                contactSide(p), riser::wallSide(cp.velocity), toCore(spring), dt
+            );
+        spring = fromCore(c.law.springAfter);
+
+        const vector F = fromCore(c.force);
+        // the parcel divides f by m_p: the force on m_p + C_A m_f
+        p.f() = (p.mass()/mEff)*F;
+        if (rotation_)
+        {
+            p.torque() = fromCore(c.torqueI);
+        }
+
+        contactTrace trace;
+        trace.wallEnergy = -0.5*dt*(workBefore + c.power);
+        addContactTrace(p, trace);
+        wallContactRecord& e = *wallRecord(p, true);
+        contactLedger::wallContactGoesOn
+        (
+            e, t, dt, overlap, F, mag(fromCore(c.law.normal)), p.U() - Uwall, n, spin
+        );
+        e.force = F;
+        e.normal = n;
+        e.wallVelocity = Uwall;
+    }
+
+    // (in the riser cloud the particles moved here are alone: those that
+    // may touch each other are sub-stepped without the mesh)
+    if (pairLaw_.valid() && !riserCloud)
+    {
+        collidePairs();
+    }
+    // drop the springs of the contacts that were not touched (ended)
+    for (parcelType& p : this->owner())
+    {
+        p.collisionRecords().update();
+    }
+}
+
+
+// * * * * * * * * * * * * * * * * Other parts * * * * * * * * * * * * * * * //
+
+#include "RiserContactPlan.C"
+#include "RiserContactMeshFree.C"
+
+// ************************************************************************* //
