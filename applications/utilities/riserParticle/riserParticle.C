@@ -26,7 +26,9 @@ Description
     integrator      adaptive;       // adaptive | paper
     adaptiveCoeffs
     {
-        tolerance   1e-6;           // relative, in [1e-14, 1)
+        tolerance   1e-10;          // relative, in [1e-14, 1), default
+                                    // 1e-10 (validation/riserParticle/
+                                    // eightScenes.py)
         maxStep     5e-4;           // [s], >= 1e-10, default none (rows
                                     // bound the steps)
     }
