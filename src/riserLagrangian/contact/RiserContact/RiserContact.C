@@ -376,7 +376,12 @@ Foam::wallContactRecord* Foam::RiserContact<CloudType>::wallRecord
 {
     if (contactsInProgress* carried = carriedContacts(p))
     {
-        return carried->wall.active || start ? &carried->wall : nullptr;
+        if (start)
+        {
+            return &carried->startWall();
+        }
+        wallContactRecord* e = carried->wall();
+        return e && e->active ? e : nullptr;
     }
     return ledger_.stockRecord(labelPair(p.origProc(), p.origId()), start);
 }
@@ -402,7 +407,7 @@ void Foam::RiserContact<CloudType>::wallContactEnds
     ledger_.wallContactEnds(key, *record, trace, t, Uout, n, spin);
     if (contactsInProgress* carried = carriedContacts(p))
     {
-        carried->wall = wallContactRecord();
+        carried->endWall();
     }
     else
     {

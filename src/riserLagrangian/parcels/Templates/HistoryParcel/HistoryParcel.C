@@ -73,10 +73,12 @@ void Foam::HistoryParcel<ParcelType>::transformProperties(const tensor& T)
     UNode_ = transform(T, UNode_);
     historyKnown_ = transform(T, historyKnown_);
     contacts_.subStepOffset = transform(T, contacts_.subStepOffset);
-    wallContactRecord& w = inProgress_.wall;
-    for (vector* u : {&w.velocityIn, &w.spinIn, &w.force, &w.normal, &w.wallVelocity, &w.impulse})
+    if (wallContactRecord* w = inProgress_.wall())
     {
-        *u = transform(T, *u);
+        for (vector* u : {&w->velocityIn, &w->spinIn, &w->force, &w->normal, &w->wallVelocity, &w->impulse})
+        {
+            *u = transform(T, *u);
+        }
     }
     for (pairContactRecord& r : inProgress_.pairs)
     {

@@ -50,8 +50,7 @@ Foam::HistoryParcel<ParcelType>::HistoryParcel
             >> contacts_.pairEnergy >> contacts_.subStepOffset;
         scalarList wall, pairs;
         is >> wall >> pairs >> subStepEnd_;
-        inProgress_.wall =
-            wallContactRecord::fromNumbers(wall, "A parcel sent between processors");
+        inProgress_.setWall(wall, "A parcel sent between processors");
         inProgress_.setPairs(pairs, "A parcel sent between processors");
         setHistory(steps, slip0, window, tail);
     }
@@ -244,8 +243,7 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
                     "Cloud " + c.name() + " at time " + c.time().timeName()
                   + ", particle " + Foam::name(i)
                 );
-                p.inProgress_.wall =
-                    wallContactRecord::fromNumbers(wall[i], what + " of " + wallIO.objectPath());
+                p.inProgress_.setWall(wall[i], what + " of " + wallIO.objectPath());
                 p.inProgress_.setPairs(pairs[i], what + " of " + pairs.objectPath());
                 ++i;
             }
@@ -415,7 +413,7 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     {
         window[i] = p.windowList();
         tail[i] = p.tailList();
-        wallInProgress[i] = p.inProgress_.wall.numbers();
+        wallInProgress[i] = p.inProgress_.wallNumbers();
         pairsInProgress[i] = p.inProgress_.pairNumbers();
         ++i;
     }
@@ -547,7 +545,7 @@ Foam::Ostream& Foam::operator<<
         << token::SPACE << p.contacts_.pairImpactSpeed
         << token::SPACE << p.contacts_.pairEnergy
         << token::SPACE << p.contacts_.subStepOffset
-        << token::SPACE << p.inProgress_.wall.numbers()
+        << token::SPACE << p.inProgress_.wallNumbers()
         << token::SPACE << p.inProgress_.pairNumbers()
         << token::SPACE << p.subStepEnd_;
 
