@@ -29,8 +29,10 @@ Description
         tolerance   1e-10;          // relative, in [1e-14, 1), default
                                     // 1e-10 (validation/riserParticle/
                                     // eightScenes.py)
-        maxStep     5e-4;           // [s], >= 1e-10, default none (rows
-                                    // bound the steps)
+        maxStep     5e-4;           // [s], >= 1e-10, default none (the
+                                    // rows come from each step's
+                                    // continuous extension and do not
+                                    // shorten the steps)
     }
     paperCoeffs
     {
