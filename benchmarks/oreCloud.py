@@ -114,12 +114,26 @@ def saved(args, stem, result):
     return open(os.path.join(args.results, stem + ".md"), "w")
 
 
+def section_length(N, Cv):
+    """the length [m] of the riser section (D = 0.1 m) that holds N ores of
+    10 mm at the solids fraction Cv"""
+    return N * math.pi / 6 * 0.01 ** 3 / (Cv * math.pi / 4 * 0.1 ** 2)
+
+
+def steps_time(text):
+    """the master's time in a solver log from the end of step 10 to the last
+    (start-up and injection left out; MPI waits spin, so in parallel it is
+    the wall time of the steps)"""
+    spent = [float(c) for c in re.findall(r"ExecutionTime = (\S+) s", text)]
+    return spent[-1] - spent[9]
+
+
 def scaling(args, work):
     """cost per particle-step and memory per particle against N (see above)"""
-    Vp, area, Cv = math.pi / 6 * 0.01 ** 3, math.pi / 4 * 0.1 ** 2, 0.05
+    Cv = 0.05
     rows = []
     for N in ((1000, 3000) if args.quick else (1000, 10000, 100000)):
-        L = N * Vp / (Cv * area)
+        L = section_length(N, Cv)
         row = {"L_m": L}
         for name in ("none", "wall+pairs"):
             case = os.path.join(work, "scaling", "N%d_%s" % (N, name.replace("+", "_")))
@@ -173,12 +187,12 @@ def scaling(args, work):
 
 def processors(args, work):
     """wall time on 2 processors against serial (see above)"""
-    Vp, area, Cv = math.pi / 6 * 0.01 ** 3, math.pi / 4 * 0.1 ** 2, 0.05
+    Cv = 0.05
     rows = []
     # (ores, simulated time)
     sizes = ((1000, 0.03),) if args.quick else ((1000, 0.1), (10000, 0.03))
     for N, end in sizes:
-        L = N * Vp / (Cv * area)
+        L = section_length(N, Cv)
         for name in ("none", "wall+pairs", "wall+pairs, alone meshFree"):
             collision, pairs, alone = VARIANTS[name]
             base = os.path.join(work, "processors", "N%d_%s" % (N, re.sub(r"[^A-Za-z0-9]+", "_", name)))
@@ -200,11 +214,7 @@ def processors(args, work):
                         command = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2",
                                    "riserParcelFoam", "-parallel", "-case", case]
                     text = cases.run(command, os.path.join(case, "log.riserParcelFoam"))
-                    # the master's time from the end of step 10 to the last
-                    # (start-up and injection left out; MPI waits spin, so
-                    # it is the wall time of the steps)
-                    spent = [float(c) for c in re.findall(r"ExecutionTime = (\S+) s", text)]
-                    row[key].append(spent[-1] - spent[9])
+                    row[key].append(steps_time(text))
                     clustered = [int(c) for c in
                                  re.findall(r"(\d+) particle\(s\) in clusters or alone", text)] or [0]
                     row["max_clustered"] = max(clustered)

@@ -15,18 +15,15 @@ stepsPerContact 40 (the default); the values alternated, three
 repetitions, the least taken.
 
 usage: stepsPerContact.py --build DIR --results DIR
-       stepsPerContact.py --plot RESULTS_DIR   (the chart of a finished run)
+       stepsPerContact.py --plot --results DIR   (the chart of a finished run)
 Writes results/stepsPerContact.{md,json,png}.
 """
 import argparse
 import json
-import math
 import os
-import re
 import shutil
-import time
-
 import sys
+import time
 
 from riserfoam import cases
 
@@ -100,10 +97,9 @@ def main():
         rows[n]["restitution"] = e
     # the cost: the shaken scene, the values alternated
     scene = os.path.join(work, "scene")
-    # (1,000 ores of 10 mm at C_v 0.05 in a 0.1 m riser: the section's
-    # length, as oreCloud.py --processors makes it)
+    # (1,000 ores at C_v 0.05, the section as oreCloud.py --processors makes it)
     Cv = 0.05
-    L = 1000 * math.pi / 6 * 0.01 ** 3 / (Cv * math.pi / 4 * 0.1 ** 2)
+    L = oreCloud.section_length(1000, Cv)
     oreCloud.make(scene, 0.05, 0.2, 4.0, *oreCloud.VARIANTS["wall"], L=L, n=6,
                   nz=max(4, int(round(L / 0.02))), Cv=Cv)
     for repeat in range(3):
@@ -115,8 +111,7 @@ def main():
                                    "subModels/riserContactCoeffs/stepsPerContact", str(n))
             text = cases.run(["riserParcelFoam", "-case", case],
                              os.path.join(case, "log.riserParcelFoam"))
-            spent = [float(t) for t in re.findall(r"ExecutionTime = (\S+) s", text)]
-            rows[n]["time_s"].append(spent[-1] - spent[9])
+            rows[n]["time_s"].append(oreCloud.steps_time(text))
     base = min(rows[40]["time_s"])
     for r in rows.values():
         r["cost_vs_40"] = min(r["time_s"]) / base
