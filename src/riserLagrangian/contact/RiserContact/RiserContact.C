@@ -15,8 +15,6 @@
 
 #include <algorithm>
 #include <cmath>
-
-#include <numeric>
 #include <vector>
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
@@ -144,6 +142,16 @@ Foam::RiserContact<CloudType>::RiserContact
 
     // the riser must exist: FatalError here rather than at the first step
     carrier_.riser();
+    // the coefficients under the model's other name (riserWallContact, its
+    // old one) would be ignored
+    const word other = (type == typeName ? word("riserWallContact") : typeName) + "Coeffs";
+    if (dict.found(other))
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry '" << other << "' beside collisionModel " << type
+            << ": the coefficients of the model's other name would be"
+            << " ignored; keep " << type << "Coeffs alone" << exit(FatalIOError);
+    }
     if (riserCloud)
     {
         // the riser cloud moves its particles by the needs of this model
