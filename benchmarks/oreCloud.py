@@ -40,10 +40,21 @@ With --processors instead: the wall time of the same scene (C_v = 0.05,
 each repetition; without contact, with wall and pair contact, and with the
 ores alone at the wall sub-stepped without the mesh too.
 
-usage: oreCloud.py [--quick] [--scaling | --processors] --build DIR --results DIR
+With --dense instead: the same wall-and-pair scene (riserMesh -n 4, 2.5 cm
+cells along) in its dense phase, for 1e3, 1e4 and 1e5 ores (quick: 1e3,
+3e3): each is first shaken for 0.08 s on 2 processors (by then most ores
+are in clusters or at the wall), then max(30, 3e5/N) steps are run from
+that state (the measured ones take about a second or more: the log's
+times count in 10 ms) serially and on 2 processors, alternated three
+times from fresh copies: the cost per particle-step from step 10 to the
+last, the speed-up (the master's time of the same steps), the particles in clusters or at
+the wall, the particle copies and bytes the contact model sent between the
+processors per step (its log), and the peak resident memory per particle.
+
+usage: oreCloud.py [--quick] [--scaling | --processors | --dense] --build DIR --results DIR
 writes <results>/oreCloud.json and <results>/oreCloud.md (--scaling:
 oreScaling.json and oreScaling.md; --processors: oreProcessors.json and
-oreProcessors.md)
+oreProcessors.md; --dense: oreDense.json and oreDense.md)
 License: GPL-3.0-or-later
 """
 import argparse
@@ -207,12 +218,8 @@ def processors(args, work):
                     shutil.copytree(base, case)
                     command = ["riserParcelFoam", "-case", case]
                     if np > 1:
-                        ff.write_dictionary(os.path.join(case, "system/decomposeParDict"),
-                                            "numberOfSubdomains 2;\nmethod simple;\n"
-                                            "simpleCoeffs { n (1 1 2); delta 0.001; }\n")
-                        cases.run(["decomposePar", "-case", case], os.path.join(case, "log.decomposePar"))
-                        command = ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2",
-                                   "riserParcelFoam", "-parallel", "-case", case]
+                        decompose(case)
+                        command = parallel(case)
                     text = cases.run(command, os.path.join(case, "log.riserParcelFoam"))
                     row[key].append(steps_time(text))
                     clustered = [int(c) for c in
@@ -242,6 +249,129 @@ def processors(args, work):
                          " ".join("%.1f" % t for t in r["np2_s"]),
                          " ".join("%.2f" % x for x in r["speedup"]), r["max_clustered"],
                          r["outside_pipe_reports"]))
+
+
+def decompose(case):
+    """case split into 2 processors along z"""
+    ff.write_dictionary(os.path.join(case, "system/decomposeParDict"),
+                        "numberOfSubdomains 2;\nmethod simple;\n"
+                        "simpleCoeffs { n (1 1 2); delta 0.001; }\n")
+    cases.run(["decomposePar", "-force", "-case", case], os.path.join(case, "log.decomposePar"))
+
+
+def parallel(case):
+    return ["mpirun", "--allow-run-as-root", "--oversubscribe", "-np", "2",
+            "riserParcelFoam", "-parallel", "-case", case]
+
+
+def exchange_per_step(text):
+    """mean over the steps of a parallel log of the particle copies and the
+    bytes riserContact sent between the processors (its plan's and its
+    sub-steps' lines, summed per step), and of the most exchanges of the
+    sub-steps' states by one processor"""
+    copies, sent, exchanges = [], [], []
+    for step in text.split("\nTime = ")[1:]:
+        lines = re.findall(r"sent copies of (\d+) particle\(s\)[^\n]*?, (\S+) bytes", step)
+        copies.append(sum(int(c) for c, _ in lines))
+        sent.append(sum(float(b) for _, b in lines))
+        exchanges.append(sum(int(k) for k in re.findall(r"at most (\d+) exchanges of states", step)))
+    return float(np.mean(copies[9:])), float(np.mean(sent[9:])), float(np.mean(exchanges[9:]))
+
+
+def dense(args, work):
+    """the wall-and-pair scene in its dense phase (see above)"""
+    Cv, spinUp, dt = 0.05, 0.08, 1e-4
+    rows = []
+    for N in ((1000, 3000) if args.quick else (1000, 10000, 100000)):
+        # (steps enough that the measured ones take about a second: the
+        # log's times count in 10 ms)
+        steps = max(30, int(3e5 / N))
+        L = section_length(N, Cv)
+        base = os.path.join(work, "dense", "N%d" % N)
+        collision, pairs, alone = VARIANTS["wall+pairs"]
+        make(base, spinUp, 0.2, 4.0, collision, pairs, alone,
+             L=L, n=4, nz=max(4, int(round(L / 0.025))), Cv=Cv)
+        decompose(base)
+        t0 = time.perf_counter()
+        cases.run(parallel(base), os.path.join(base, "log.spinUp"))
+        spun = time.perf_counter() - t0
+        cases.run(["reconstructPar", "-latestTime", "-lagrangianFields", "(\".*\")", "-case", base],
+                  os.path.join(base, "log.reconstructPar"))
+        control = os.path.join(base, "system", "controlDict")
+        end = spinUp + steps * dt
+        for entry, value in (("startFrom", "latestTime"), ("endTime", repr(end)),
+                             ("writeInterval", repr(1.0))):
+            ff.set_nested(control, entry, value)
+        row = {"N": N, "L_m": L, "spin_up_s": spinUp, "steps": steps, "spin_up_wall_s": spun,
+               "serial_s": [], "np2_s": []}
+        for repeat in range(3):
+            for key, np_ in (("serial_s", 1), ("np2_s", 2)):
+                case = base + "_np%d" % np_
+                shutil.rmtree(case, ignore_errors=True)
+                shutil.copytree(base, case)
+                log = os.path.join(case, "log.riserParcelFoam")
+                if np_ == 1:
+                    with open(log, "w") as out:
+                        t0 = time.perf_counter()
+                        subprocess.run(["/usr/bin/time", "-v", "riserParcelFoam", "-case", case],
+                                       stdout=out, stderr=subprocess.STDOUT, check=True)
+                    text = open(log).read()
+                    row["peak_rss_MB"] = int(re.search(
+                        r"Maximum resident set size \(kbytes\): (\d+)", text).group(1)) / 1024
+                else:
+                    text = cases.run(parallel(case), log)
+                    (row["copies_per_step"], row["bytes_per_step"],
+                     row["exchanges_per_step"]) = exchange_per_step(text)
+                row[key].append(steps_time(text))
+                clustered = [int(c) for c in
+                             re.findall(r"(\d+) particle\(s\) in clusters or alone", text)] or [0]
+                row["clustered_fraction"] = min(clustered) / N
+                substeps = [int(k) for k in re.findall(r"alone at the wall: (\d+) contact sub-steps", text)]
+                row["substeps_per_step"] = float(np.mean(substeps)) if substeps else 0.0
+                row["parcels"] = int(re.findall(r"Current number of parcels\s*=\s*(\d+)", text)[-1])
+                row["outside_pipe_reports"] = text.count("outside the pipe")
+        row["us_per_particle_step"] = 1e6 * min(row["serial_s"]) / ((steps - 10) * N)
+        row["speedup"] = [a / b for a, b in zip(row["serial_s"], row["np2_s"])]
+        rows.append(row)
+        print(row)
+    for r in rows:
+        r["cost_ratio_to_first"] = r["us_per_particle_step"] / rows[0]["us_per_particle_step"]
+    for a, b in zip(rows, rows[1:]):
+        b["bytes_per_particle"] = 1024 * 1024 * (b["peak_rss_MB"] - a["peak_rss_MB"]) / (b["N"] - a["N"])
+    result = stamped(rows=rows)
+    with saved(args, "oreDense", result) as out:
+        out.write("# Ores with wall and pair contact in the dense phase "
+                  "(benchmarks/oreCloud.py --dense%s)\n\n" % (" --quick" if args.quick else ""))
+        out.write("Measured %s, load average %s. C_v = 0.05, A = 0.2 m, f = 4 Hz, dt = 1e-4 s, "
+                  "riserMesh -n 4 with 2.5 cm cells along the section, whose length grows with "
+                  "the number of ores; shaken %g s on 2 processors, then 30 steps (300 for 1e3 ores, "
+                  "3e5/N for fewer than 1e4) from that state "
+                  "serially and on 2 processors (split along z), alternated three times from "
+                  "fresh copies. Time: the master's time from step 10 to the last (its ExecutionTime: CPU "
+                  "time, MPI waits spin); cost: the serial time per particle-step (least of "
+                  "the three) and its ratio to the first row; speed-up: serial over 2 processors, "
+                  "repeat by repeat; clustered: the least fraction of the ores in clusters "
+                  "or alone at the wall in a step; sent: riserContact's particle copies and bytes "
+                  "sent between the processors per step (mean of the steps); memory: the serial "
+                  "run's peak resident set and its growth per particle from the previous row (the "
+                  "mesh's growth included).\n\n"
+                  % (result["date"], " ".join(result["load"]), spinUp))
+        out.write("| ores | section [m] | clustered | us/particle-step | ratio | serial s | "
+                  "2 processors s | speed-up | copies sent per step | bytes per step | "
+                  "bytes per copy | peak RSS [MB] | bytes per particle | parcels at the end | "
+                  "outside-pipe reports |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n")
+        for r in rows:
+            out.write("| %d | %.2f | %.2f | %.2f | %.2f | %s | %s | %s | %.0f | %.0f | %.0f | %.0f | %s | %d | %d |\n"
+                      % (r["N"], r["L_m"], r["clustered_fraction"], r["us_per_particle_step"],
+                         r["cost_ratio_to_first"],
+                         " ".join("%.1f" % t for t in r["serial_s"]),
+                         " ".join("%.1f" % t for t in r["np2_s"]),
+                         " ".join("%.2f" % x for x in r["speedup"]),
+                         r["copies_per_step"], r["bytes_per_step"],
+                         r["bytes_per_step"] / max(r["copies_per_step"], 1),
+                         r["peak_rss_MB"],
+                         "%.0f" % r["bytes_per_particle"] if "bytes_per_particle" in r else "",
+                         r["parcels"], r["outside_pipe_reports"]))
 
 
 def simulated(log):
@@ -301,6 +431,7 @@ def main():
     ap.add_argument("--quick", action="store_true")
     ap.add_argument("--scaling", action="store_true")
     ap.add_argument("--processors", action="store_true")
+    ap.add_argument("--dense", action="store_true")
     ap.add_argument("--build", required=True)
     ap.add_argument("--results", required=True)
     args = ap.parse_args()
@@ -312,6 +443,9 @@ def main():
         return
     if args.processors:
         processors(args, work)
+        return
+    if args.dense:
+        dense(args, work)
         return
     rows = {}
     for scene, (A, f) in SCENES.items():

@@ -5,7 +5,11 @@
 // neighbours. Only occupied cells are stored (hashed by their integer
 // coordinates), so memory is O(N) however sparse or clustered the centres
 // are; at bounded density a build and a visit cost O(N) (plus an O(N log N)
-// sort), against O(N^2) for all pairs.
+// sort), against O(N^2) for all pairs. The cells are visited in the order
+// of their coordinates (z, then y, then x), not in the hash table's, so
+// that the pairs come in the order of space: a caller that numbers its
+// centres along z then reaches its data for each pair from nearby memory
+// (with 1e5 centres, the table's order costs a cache miss a pair).
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_GRANULAR_CELLLIST_HPP
@@ -61,16 +65,19 @@ public:
             {{-1, -1, 1}}, {{0, -1, 1}}, {{1, -1, 1}}, {{-1, 0, 1}}, {{0, 0, 1}},
             {{1, 0, 1}}, {{-1, 1, 1}}, {{0, 1, 1}}, {{1, 1, 1}}
         }};
-        for (const auto& cell : cells_)
+        for (std::size_t a0 = 0, a1 = 0; a0 < order_.size(); a0 = a1)
         {
-            const std::size_t a0 = cell.second.first, a1 = cell.second.second;
+            // the cell of order_[a0 .. a1): its centres, sorted by its key
+            const std::uint64_t key = order_[a0].first;
+            a1 = a0 + 1;
+            while (a1 < order_.size() && order_[a1].first == key) ++a1;
             for (std::size_t a = a0; a < a1; ++a)
             {
                 for (std::size_t b = a + 1; b < a1; ++b) f(order_[a].second, order_[b].second);
             }
-            const std::int64_t cx = coordinate(cell.first, 0);
-            const std::int64_t cy = coordinate(cell.first, 1);
-            const std::int64_t cz = coordinate(cell.first, 2);
+            const std::int64_t cx = coordinate(key, 0);
+            const std::int64_t cy = coordinate(key, 1);
+            const std::int64_t cz = coordinate(key, 2);
             for (const auto& o : half)
             {
                 if (cx + o[0] < 0 || cy + o[1] < 0 || cz + o[2] < 0) continue;

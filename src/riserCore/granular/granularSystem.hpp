@@ -630,6 +630,9 @@ private:
             if (c.touching) kept.emplace(key(c.i, c.j), c);
         }
         list_.clear();
+        // (a dense packing lists about 3 pairs a grain: no reallocation in
+        // the first build of a system made anew in every flow step)
+        list_.reserve(4*n);
 
         pairs_.forEachPair(positions_, cutoff, [&](std::size_t i, std::size_t j, double dz)
         {

@@ -220,10 +220,14 @@ Foam::RiserContact<CloudType>::meshFreeContacts
     // pair springs
     List<grainState> all;
     List<grainPairSpring> springs;
+    // what this processor sends the others in the step: bytes
+    std::size_t bytesSent = 0;
+    label nOwnGrains = 0;
     {
         List<grainState> own;
         List<grainPairSpring> ownSprings;
         grainStates(parcels, fluidAcceleration, startOffset, own, ownSprings);
+        nOwnGrains = own.size();
         DynamicList<grainState> grains(own);
         DynamicList<grainPairSpring> pairSprings(ownSprings);
         if (pairLaw_.valid() && Pstream::parRun())
@@ -262,11 +266,11 @@ Foam::RiserContact<CloudType>::meshFreeContacts
                 }
                 sendSprings[proc].transfer(k);
             }
-            for (const List<grainState>& g : exchanged(send, own))
+            for (const List<grainState>& g : exchanged(send, own, bytesSent))
             {
                 grains.append(g);
             }
-            for (const List<grainPairSpring>& g : exchanged(sendSprings, ownSprings))
+            for (const List<grainPairSpring>& g : exchanged(sendSprings, ownSprings, bytesSent))
             {
                 pairSprings.append(g);
             }
@@ -431,6 +435,7 @@ Foam::RiserContact<CloudType>::meshFreeContacts
                     Pstream::commsTypes::nonBlocking, proc,
                     reinterpret_cast<const char*>(state.cdata()), state.byteSize()
                 );
+                bytesSent += state.byteSize();
             }
         }
         UPstream::waitRequests(requests);
@@ -608,7 +613,11 @@ Foam::RiserContact<CloudType>::meshFreeContacts
         Info<< "    riserContact: "
             << returnReduce(pairsInContact, sumOp<label>()) << " pair(s) in contact, "
             << returnReduce(acrossProcessors, sumOp<label>())
-            << " across processor boundaries" << endl;
+            << " across processor boundaries; sent copies of "
+            << returnReduce(label(all.size()) - nOwnGrains, sumOp<label>())
+            << " particle(s) and their states in the sub-steps, "
+            << returnReduce(scalar(bytesSent), sumOp<scalar>()) << " bytes"
+            << endl;
     }
 
     return ownSteps;

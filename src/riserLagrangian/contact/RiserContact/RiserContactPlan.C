@@ -289,6 +289,13 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
     // this processor's particles (0 .. nOwn - 1), then the ghosts
     const labelListList send =
         nearProcessors(ownX, cutoff, section_.periodic ? section_.length : 0);
+    // what this processor sends the others in the plan: copies and bytes
+    label copiesSent = 0;
+    std::size_t bytesSent = 0;
+    for (const labelList& s : send)
+    {
+        copiesSent += s.size();
+    }
     List<List<scalar>> ghostData;
     {
         labelListList sendRows(send.size());
@@ -303,7 +310,7 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
                 }
             }
         }
-        ghostData = exchanged(sendRows, ownData);
+        ghostData = exchanged(sendRows, ownData, bytesSent);
     }
     DynamicList<labelPair> keys(nOwn);
     DynamicList<vector> X(nOwn), U(nOwn);
@@ -389,7 +396,7 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
         {
             ownNeeds[i] = plan.need(i);
         }
-        const List<List<label>> ghostNeed = exchanged(send, ownNeeds);
+        const List<List<label>> ghostNeed = exchanged(send, ownNeeds, bytesSent);
         forAll(ghostNeed, proc)
         {
             forAll(ghostNeed[proc], k)
@@ -398,6 +405,13 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
             }
         }
         reduce(grown, orOp<bool>());
+    }
+    if (Pstream::parRun())
+    {
+        Info<< "    riserContact: plan sent copies of "
+            << returnReduce(copiesSent, sumOp<label>()) << " particle(s) near"
+            << " other processors, "
+            << returnReduce(scalar(bytesSent), sumOp<scalar>()) << " bytes" << endl;
     }
     for (label i = 0; i < nOwn; ++i)
     {
