@@ -14,8 +14,17 @@ all alike; CPU time (user + sys of the child processes, all ranks) per
 simulated second, and the ratio ours / LIGGGHTS per repeat (median
 reported). The engine runs in one process: it has no domain decomposition.
 
-usage: granular.py [--quick] --build DIR --results DIR
-writes <results>/granular.json and <results>/granular.md
+With --dense instead: the bed settled, every grain in contact. LIGGGHTS
+pours each column for 0.5 s (its lowest grains at rest on the floor, the
+rest piled on them); both programs then start from its final positions, at
+rest, and run 0.1 s, alternated three times: CPU seconds per grain-step of
+each and their ratio per repeat (the target: ours at most 1.5 times
+LIGGGHTS on one rank), with the mean number of contacts a grain has at the
+end (LIGGGHTS' contact/atom).
+
+usage: granular.py [--quick] [--dense] --build DIR --results DIR
+writes <results>/granular.json and <results>/granular.md (--dense:
+granularDense.json and granularDense.md)
 License: GPL-3.0-or-later
 """
 import argparse
@@ -79,9 +88,74 @@ def liggghts(ranks, data, steps, out, cwd):
         return timed(args, cwd, stdin=inp)
 
 
+def settled(n, work):
+    """the data file of n ores poured for 0.5 s by LIGGGHTS (their final
+    positions, at rest), and the mean number of contacts of a grain then"""
+    data = os.path.join(work, "ores%d.data" % n)
+    lattice(n, 1, data)
+    dump = "settle%d.dump" % n
+    liggghts(1, data, int(round(0.5/DT)), dump, work)
+    with open(os.path.join(work, dump)) as f:
+        lines = f.read().splitlines()
+    start = next(i for i, l in enumerate(lines) if l.startswith("ITEM: ATOMS")) + 1
+    rows = [l.split() for l in lines[start:start + n]]
+    top = max(float(r[4]) for r in rows) + 0.02
+    bed = os.path.join(work, "bed%d.data" % n)
+    with open(bed, "w") as f:
+        f.write("a settled bed of ores\n\n%d atoms\n1 atom types\n\n" % n)
+        f.write("-0.06 0.06 xlo xhi\n-0.06 0.06 ylo yhi\n-0.01 %g zlo zhi\n\nAtoms\n\n" % top)
+        for r in rows:
+            f.write("%s 1 %.17g 2500 %s %s %s\n" % (r[0], 2*float(r[1]), r[2], r[3], r[4]))
+    return bed, statistics.mean(float(r[5]) for r in rows)
+
+
+def dense(args, work, engine):
+    """ours against LIGGGHTS 1 rank on the settled bed (see above)"""
+    sizes = [1000] if args.quick else [1000, 5000]
+    simulated = 0.02 if args.quick else 0.1
+    steps = int(round(simulated/DT))
+    rows = []
+    for n in sizes:
+        bed, contacts = settled(n, work)
+        runs = {"liggghts1": [], "ours": []}
+        for r in range(3):
+            runs["liggghts1"].append(liggghts(1, bed, steps, "dense1.dump", work))
+            runs["ours"].append(timed([engine, bed, str(E), str(NU), str(EN), str(MU), str(DT),
+                                       str(steps), str(R), "dense.txt"], work))
+        per = {k: [1e9*cpu/(n*steps) for cpu, _ in v] for k, v in runs.items()}
+        ratios = [o/l for o, l in zip(per["ours"], per["liggghts1"])]
+        row = {"N": n, "simulated_s": simulated, "steps": steps, "contacts_per_grain": contacts,
+               "ns_per_grain_step": per, "ratio_ours_to_liggghts1": ratios,
+               "ratio_median": statistics.median(ratios)}
+        rows.append(row)
+        print(row)
+    result = {"date": datetime.datetime.now().isoformat(timespec="seconds"),
+              "quick": args.quick, "rows": rows}
+    with open(os.path.join(args.results, "granularDense.json"), "w") as f:
+        json.dump(result, f, indent=1)
+    with open(os.path.join(args.results, "granularDense.md"), "w") as f:
+        f.write("# Grain engine against LIGGGHTS 3.8 on a settled bed (pure DEM)\n\n")
+        f.write("Measured %s by `benchmarks/granular.py --dense%s`: ores of 9-11 mm poured by "
+                "LIGGGHTS for 0.5 s into a closed riser section (D = 0.1 m), then both programs "
+                "from those positions at rest for %g s (dt = %g s, the same Hertz-Mindlin law and "
+                "parameters, rotation), alternated three times; CPU nanoseconds per grain-step and "
+                "the ratio ours / LIGGGHTS of each repeat. Target: at most 1.5.\n\n"
+                % (result["date"], " --quick" if args.quick else "", simulated, DT))
+        f.write("| N | contacts per grain | LIGGGHTS 1 rank [ns] | ours [ns] | ours / LIGGGHTS |\n"
+                "|---|---|---|---|---|\n")
+        for r in rows:
+            p = r["ns_per_grain_step"]
+            f.write("| %d | %.1f | %s | %s | %s |\n"
+                    % (r["N"], r["contacts_per_grain"],
+                       " ".join("%.0f" % x for x in p["liggghts1"]),
+                       " ".join("%.0f" % x for x in p["ours"]),
+                       " ".join("%.2f" % x for x in r["ratio_ours_to_liggghts1"])))
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--quick", action="store_true")
+    ap.add_argument("--dense", action="store_true")
     ap.add_argument("--build", required=True)
     ap.add_argument("--results", required=True)
     args = ap.parse_args()
@@ -92,6 +166,9 @@ def main():
     subprocess.run(["g++", "-O2", "-std=c++17", "-DNDEBUG", "-I", os.path.join(ROOT, "src", "riserCore"),
                     "-I", "/usr/include/eigen3", os.path.join(TEST, "granularBed.cpp"), "-o", engine],
                    check=True)
+    if args.dense:
+        dense(args, work, engine)
+        return
     sizes = [1000] if args.quick else [1000, 5000]
     simulated = 0.05 if args.quick else 0.2
     steps = int(round(simulated/DT))

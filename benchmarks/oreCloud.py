@@ -326,7 +326,7 @@ def dense(args, work):
                 clustered = [int(c) for c in
                              re.findall(r"(\d+) particle\(s\) in clusters or alone", text)] or [0]
                 row["clustered_fraction"] = min(clustered) / N
-                substeps = [int(k) for k in re.findall(r"alone at the wall: (\d+) contact sub-steps", text)]
+                substeps = [int(k) for k in re.findall(r"alone at the wall: (?:at most )?(\d+) contact sub-steps", text)]
                 row["substeps_per_step"] = float(np.mean(substeps)) if substeps else 0.0
                 row["parcels"] = int(re.findall(r"Current number of parcels\s*=\s*(\d+)", text)[-1])
                 row["outside_pipe_reports"] = text.count("outside the pipe")
@@ -392,7 +392,7 @@ def run(case):
     counts = [int(c) for c in re.findall(r"Current number of parcels\s*=\s*(\d+)", text)]
     near = [int(c) for c in re.findall(r"(\d+) particle\(s\) near", text)] or [0]
     sub = [int(c) for c in re.findall(r"(\d+) move-collide subCycles", text)] or [1]
-    clustered = re.findall(r"(\d+) particle\(s\) in clusters or alone at the wall: (\d+)"
+    clustered = re.findall(r"(\d+) particle\(s\) in clusters or alone at the wall: (?:at most )?(\d+)"
                            r" contact sub-steps", text)
     contacts = os.path.join(case, "postProcessing/lagrangian/kinematicCloud/riserContact",
                             "contacts.dat")

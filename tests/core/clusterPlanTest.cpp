@@ -236,3 +236,31 @@ TEST(ClusterPlan, RefusesGrainsItDoesNotHold)
     EXPECT_THROW(plan.raise(5, 1), std::out_of_range);
     EXPECT_THROW(plan.need(2), std::out_of_range);
 }
+
+TEST(ClusterPlan, EachGrainsClusterNamesItsComponent)
+{
+    // cluster(i) == cluster(j) exactly when a breadth-first search finds i
+    // and j connected (grains as their own needs' labels: each grain's need
+    // is its index, so the search's largest need of a component names it)
+    std::mt19937 rng(31);
+    for (int trial = 0; trial < 100; ++trial)
+    {
+        const std::size_t n = 2 + rng() % 200;
+        const std::vector<Edge> edges = randomEdges(rng, n, rng() % n);
+        std::vector<long> index(n);
+        for (std::size_t i = 0; i < n; ++i) index[i] = long(i);
+        std::vector<Edge> unweighted;
+        for (const Edge& e : edges) unweighted.push_back({e.i, e.j, 0});
+        const std::vector<long> component = needsBySearch(index, unweighted);
+        ClusterPlan plan(std::vector<long>(n, 0));
+        for (const Edge& e : edges) plan.join(e.i, e.j, 0);
+        for (std::size_t i = 0; i < n; ++i)
+        {
+            for (std::size_t j = i + 1; j < n; ++j)
+            {
+                ASSERT_EQ(plan.cluster(i) == plan.cluster(j), component[i] == component[j])
+                    << "trial " << trial << ", grains " << i << " and " << j;
+            }
+        }
+    }
+}

@@ -2,14 +2,15 @@
 // list; Allen & Tildesley, Computer Simulation of Liquids, 1987, sec. 5.3).
 // Two centres closer than the cutoff lie in the same or in adjacent cells;
 // each pair is visited once, through the cell itself and 13 of its 26
-// neighbours. Only occupied cells are stored (hashed by their integer
-// coordinates), so memory is O(N) however sparse or clustered the centres
-// are; at bounded density a build and a visit cost O(N) (plus an O(N log N)
-// sort), against O(N^2) for all pairs. The cells are visited in the order
-// of their coordinates (z, then y, then x), not in the hash table's, so
-// that the pairs come in the order of space: a caller that numbers its
-// centres along z then reaches its data for each pair from nearby memory
-// (with 1e5 centres, the table's order costs a cache miss a pair).
+// neighbours. Only occupied cells are stored, sorted by their integer
+// coordinates (z, then y, then x) and found by bisection, so memory is O(N)
+// however sparse or clustered the centres are; a build and a visit cost
+// O(N log N) (a sort, and a bisection for each of a cell's 13 neighbours),
+// against O(N^2) for all pairs. The cells are visited in that order, so the
+// pairs come in the order of space: a caller that numbers its centres
+// along z reaches its data for each pair from nearby memory (with 1e5
+// centres, a hash table's order cost a cache miss a pair, and its
+// allocations dominated the builds of many small lists).
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_GRANULAR_CELLLIST_HPP
@@ -23,7 +24,6 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
-#include <unordered_map>
 #include <utility>
 #include <vector>
 
@@ -45,12 +45,11 @@ public:
         order_.reserve(x.size());
         for (std::size_t i = 0; i < x.size(); ++i) order_.emplace_back(cellKey(x[i]), i);
         std::sort(order_.begin(), order_.end());
-        cells_.reserve(order_.size());
         for (std::size_t a = 0; a < order_.size();)
         {
             std::size_t b = a + 1;
             while (b < order_.size() && order_[b].first == order_[a].first) ++b;
-            cells_.emplace(order_[a].first, std::make_pair(a, b));
+            cells_.push_back(Cell{order_[a].first, a, b});
             a = b;
         }
     }
@@ -65,12 +64,10 @@ public:
             {{-1, -1, 1}}, {{0, -1, 1}}, {{1, -1, 1}}, {{-1, 0, 1}}, {{0, 0, 1}},
             {{1, 0, 1}}, {{-1, 1, 1}}, {{0, 1, 1}}, {{1, 1, 1}}
         }};
-        for (std::size_t a0 = 0, a1 = 0; a0 < order_.size(); a0 = a1)
+        for (const Cell& cell : cells_)
         {
-            // the cell of order_[a0 .. a1): its centres, sorted by its key
-            const std::uint64_t key = order_[a0].first;
-            a1 = a0 + 1;
-            while (a1 < order_.size() && order_[a1].first == key) ++a1;
+            const std::uint64_t key = cell.key;
+            const std::size_t a0 = cell.first, a1 = cell.end;
             for (std::size_t a = a0; a < a1; ++a)
             {
                 for (std::size_t b = a + 1; b < a1; ++b) f(order_[a].second, order_[b].second);
@@ -81,11 +78,16 @@ public:
             for (const auto& o : half)
             {
                 if (cx + o[0] < 0 || cy + o[1] < 0 || cz + o[2] < 0) continue;
-                const auto other = cells_.find(pack(cx + o[0], cy + o[1], cz + o[2]));
-                if (other == cells_.end()) continue;
+                const std::uint64_t k = pack(cx + o[0], cy + o[1], cz + o[2]);
+                const auto other = std::lower_bound
+                (
+                    cells_.begin(), cells_.end(), k,
+                    [](const Cell& c, std::uint64_t key) { return c.key < key; }
+                );
+                if (other == cells_.end() || other->key != k) continue;
                 for (std::size_t a = a0; a < a1; ++a)
                 {
-                    for (std::size_t b = other->second.first; b < other->second.second; ++b)
+                    for (std::size_t b = other->first; b < other->end; ++b)
                     {
                         f(order_[a].second, order_[b].second);
                     }
@@ -128,8 +130,15 @@ private:
 
     double side_ = 1.0;
     Vector lo_ = Vector::Zero();
+    //- An occupied cell: its key, and its centres order_[first .. end)
+    struct Cell
+    {
+        std::uint64_t key;
+        std::size_t first, end;
+    };
+
     std::vector<std::pair<std::uint64_t, std::size_t>> order_;
-    std::unordered_map<std::uint64_t, std::pair<std::size_t, std::size_t>> cells_;
+    std::vector<Cell> cells_;   //!< sorted by key
 };
 
 } // namespace riser

@@ -102,6 +102,14 @@ public:
         return find(i) == find(j);
     }
 
+    //- The cluster of grain i, named by one of its grains: the same for
+    //  the grains of one cluster, different for those of two
+    std::size_t cluster(std::size_t i)
+    {
+        check(i);
+        return find(i);
+    }
+
 private:
     void check(std::size_t i) const
     {

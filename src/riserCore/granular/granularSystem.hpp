@@ -615,6 +615,7 @@ private:
         listValid_ = true;
         ++builds_;
         if (!pairLaw_) return;  // no pair contact: no pairs to list
+        if (n < 2 && preset_.empty() && list_.empty()) return;  // no pair
         const double cutoff = 2.0*rMax + skinLength_;
         // the contacts in progress (those handed over not yet evaluated)
         std::unordered_map<std::uint64_t, Candidate> kept;

@@ -81,7 +81,8 @@ Foam::Ostream& Foam::operator<<(Ostream& os, const grainState& m)
         << token::SPACE << m.Uc << token::SPACE << m.R << token::SPACE
         << m.mEff << token::SPACE << m.mP << token::SPACE << m.inertia
         << token::SPACE << m.F << token::SPACE << m.T << token::SPACE
-        << m.touchingWall << token::SPACE << m.wallSpring;
+        << m.touchingWall << token::SPACE << m.wallSpring << token::SPACE
+        << m.need;
     return os;
 }
 
@@ -90,7 +91,7 @@ Foam::Istream& Foam::operator>>(Istream& is, grainState& m)
 {
     is  >> m.key >> m.processor >> m.x >> m.xStart >> m.U >> m.omega >> m.a
         >> m.drag >> m.Uc >> m.R >> m.mEff >> m.mP >> m.inertia >> m.F
-        >> m.T >> m.touchingWall >> m.wallSpring;
+        >> m.T >> m.touchingWall >> m.wallSpring >> m.need;
     is.check(FUNCTION_NAME);
     return is;
 }
