@@ -3,10 +3,12 @@
 // Two centres closer than the cutoff lie in the same or in adjacent cells;
 // each pair is visited once, through the cell itself and 13 of its 26
 // neighbours. Only occupied cells are stored, sorted by their integer
-// coordinates (z, then y, then x) and found by bisection, so memory is O(N)
-// however sparse or clustered the centres are; a build and a visit cost
-// O(N log N) (a sort, and a bisection for each of a cell's 13 neighbours),
-// against O(N^2) for all pairs. The cells are visited in that order, so the
+// coordinates (z, then y, then x), so memory is O(N) however sparse or
+// clustered the centres are; a build costs O(N log N) (a sort) and a visit
+// O(N), against O(N^2) for all pairs. The cells are visited in that order:
+// the key of a cell's neighbour at a given offset is the cell's key plus a
+// constant, so the neighbours at each of the 13 offsets are met in the
+// order of the keys, each found by a cursor that only moves forward. The
 // pairs come in the order of space: a caller that numbers its centres
 // along z reaches its data for each pair from nearby memory (with 1e5
 // centres, a hash table's order cost a cache miss a pair, and its
@@ -64,6 +66,9 @@ public:
             {{-1, -1, 1}}, {{0, -1, 1}}, {{1, -1, 1}}, {{-1, 0, 1}}, {{0, 0, 1}},
             {{1, 0, 1}}, {{-1, 1, 1}}, {{0, 1, 1}}, {{1, 1, 1}}
         }};
+        // for each offset, the first cell whose key is not below the
+        // neighbour's key of the cells visited so far
+        std::array<std::size_t, 13> cursor{};
         for (const Cell& cell : cells_)
         {
             const std::uint64_t key = cell.key;
@@ -75,16 +80,15 @@ public:
             const std::int64_t cx = coordinate(key, 0);
             const std::int64_t cy = coordinate(key, 1);
             const std::int64_t cz = coordinate(key, 2);
-            for (const auto& o : half)
+            for (std::size_t h = 0; h < half.size(); ++h)
             {
+                const auto& o = half[h];
                 if (cx + o[0] < 0 || cy + o[1] < 0 || cz + o[2] < 0) continue;
                 const std::uint64_t k = pack(cx + o[0], cy + o[1], cz + o[2]);
-                const auto other = std::lower_bound
-                (
-                    cells_.begin(), cells_.end(), k,
-                    [](const Cell& c, std::uint64_t key) { return c.key < key; }
-                );
-                if (other == cells_.end() || other->key != k) continue;
+                std::size_t& c = cursor[h];
+                while (c < cells_.size() && cells_[c].key < k) ++c;
+                if (c == cells_.size() || cells_[c].key != k) continue;
+                const Cell* other = &cells_[c];
                 for (std::size_t a = a0; a < a1; ++a)
                 {
                     for (std::size_t b = other->first; b < other->end; ++b)
