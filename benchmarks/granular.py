@@ -88,6 +88,16 @@ def liggghts(ranks, data, steps, out, cwd):
         return timed(args, cwd, stdin=inp)
 
 
+def saved(args, stem, rows):
+    """<results>/<stem>.json written (the rows, the date); <results>/<stem>.md
+    opened for the table; and the result"""
+    result = {"date": datetime.datetime.now().isoformat(timespec="seconds"),
+              "quick": args.quick, "rows": rows}
+    with open(os.path.join(args.results, stem + ".json"), "w") as f:
+        json.dump(result, f, indent=1)
+    return open(os.path.join(args.results, stem + ".md"), "w"), result
+
+
 def settled(n, work):
     """the data file of n ores poured for 0.5 s by LIGGGHTS (their final
     positions, at rest), and the mean number of contacts of a grain then"""
@@ -129,11 +139,8 @@ def dense(args, work, engine):
                "ratio_median": statistics.median(ratios)}
         rows.append(row)
         print(row)
-    result = {"date": datetime.datetime.now().isoformat(timespec="seconds"),
-              "quick": args.quick, "rows": rows}
-    with open(os.path.join(args.results, "granularDense.json"), "w") as f:
-        json.dump(result, f, indent=1)
-    with open(os.path.join(args.results, "granularDense.md"), "w") as f:
+    out, result = saved(args, "granularDense", rows)
+    with out as f:
         f.write("# Grain engine against LIGGGHTS 3.8 on a settled bed (pure DEM)\n\n")
         f.write("Measured %s by `benchmarks/granular.py --dense%s`: ores of 9-11 mm poured by "
                 "LIGGGHTS for 0.5 s into a closed riser section (D = 0.1 m), then both programs "
@@ -201,11 +208,8 @@ def main():
               % (n, statistics.median(per["liggghts1"]), statistics.median(per["liggghts2"]),
                  statistics.median(per["ours"]), row["ratio_ours_to_liggghts1"],
                  row["ratio_ours_to_liggghts2"]))
-    result = {"date": datetime.datetime.now().isoformat(timespec="seconds"),
-              "quick": args.quick, "rows": rows}
-    with open(os.path.join(args.results, "granular.json"), "w") as f:
-        json.dump(result, f, indent=1)
-    with open(os.path.join(args.results, "granular.md"), "w") as f:
+    out, result = saved(args, "granular", rows)
+    with out as f:
         f.write("# Grain engine against LIGGGHTS 3.8 (pure DEM, poured riser section)\n\n")
         f.write("Measured %s by `benchmarks/granular.py%s`; CPU seconds per simulated second, "
                 "median of %d alternated repeats. Target: ours within 3 times LIGGGHTS.\n\n"

@@ -139,6 +139,15 @@ def steps_time(text):
     return spent[-1] - spent[9]
 
 
+def memory_growth(rows, key=None):
+    """each row after the first gets the growth of the peak resident memory
+    per particle from the row before (of its entry key, or of itself)"""
+    for a, b in zip(rows, rows[1:]):
+        ra, rb = (a[key], b[key]) if key else (a, b)
+        rb["bytes_per_particle"] = (1024 * 1024 * (rb["peak_rss_MB"] - ra["peak_rss_MB"])
+                                    / (b["N"] - a["N"]))
+
+
 def scaling(args, work):
     """cost per particle-step and memory per particle against N (see above)"""
     Cv = 0.05
@@ -168,10 +177,8 @@ def scaling(args, work):
                         / row["none"]["us_per_particle_step"])
         rows.append(row)
         print(row)
-    for a, b in zip(rows, rows[1:]):
-        for name in ("none", "wall+pairs"):
-            b[name]["bytes_per_particle"] = (1024 * 1024 * (b[name]["peak_rss_MB"] - a[name]["peak_rss_MB"])
-                                             / (b["N"] - a["N"]))
+    for name in ("none", "wall+pairs"):
+        memory_growth(rows, name)
     result = stamped(rows=rows)
     with saved(args, "oreScaling", result) as out:
         out.write("# Ores with wall and pair contact against their number "
@@ -336,8 +343,7 @@ def dense(args, work):
         print(row)
     for r in rows:
         r["cost_ratio_to_first"] = r["us_per_particle_step"] / rows[0]["us_per_particle_step"]
-    for a, b in zip(rows, rows[1:]):
-        b["bytes_per_particle"] = 1024 * 1024 * (b["peak_rss_MB"] - a["peak_rss_MB"]) / (b["N"] - a["N"])
+    memory_growth(rows)
     result = stamped(rows=rows)
     with saved(args, "oreDense", result) as out:
         out.write("# Ores with wall and pair contact in the dense phase "
