@@ -204,8 +204,7 @@ Foam::RiserContact<CloudType>::meshFreeContacts
 (
     const UList<parcelType*>& parcels,
     const UList<linearisedAcceleration>& fluidAcceleration,
-    const UList<vector>& startOffset,
-    const label nSubNeeded
+    const UList<vector>& startOffset
 )
 {
     const Time& time = this->owner().mesh().time();
