@@ -88,7 +88,7 @@ TEST(ContactKernel, SpringGrowsBySlipUntilTheCoulombCap)
     int k = 0;
     for (; k < 100000; ++k)
     {
-        const ContactStep c = stepContact(hm, body, delta, n, p, wall, s, dt);
+        const ContactStep c = stepContact(hm, body, delta, n, p, wall, s, NAN, dt);
         EXPECT_NEAR(c.law.normal.norm(), Fn, 1e-12*Fn);
         if (c.law.sliding)
         {
@@ -121,7 +121,7 @@ TEST(ContactKernel, PairTorquesAndPowerFollowTheirDefinitions)
     const HertzMindlin hm = law(0.5);
     const Vector s0(0.0, 1e-7, -2e-7);
     const ContactStep c =
-        stepContact(hm, pairBody(Ri, mi, Rj, mj), g.overlap, g.normal, i, j, s0, 1e-6);
+        stepContact(hm, pairBody(Ri, mi, Rj, mj), g.overlap, g.normal, i, j, s0, NAN, 1e-6);
     EXPECT_GT(c.law.tangential.norm(), 0.0);
     EXPECT_LT((c.force - c.law.normal - c.law.tangential).norm(), tol*c.force.norm());
     EXPECT_LT((c.torqueI - (Ri*g.normal).cross(c.law.tangential)).norm(), tol*c.torqueI.norm());
@@ -132,7 +132,7 @@ TEST(ContactKernel, PairTorquesAndPowerFollowTheirDefinitions)
     const Vector expected = g.overlap*g.normal.cross(c.law.tangential);
     EXPECT_LT((Ldot - expected).norm(), 1e-9*c.torqueI.norm());
     // apart: nothing
-    const ContactStep apart = stepContact(hm, pairBody(Ri, mi, Rj, mj), -1e-6, g.normal, i, j, s0, 1e-6);
+    const ContactStep apart = stepContact(hm, pairBody(Ri, mi, Rj, mj), -1e-6, g.normal, i, j, s0, NAN, 1e-6);
     EXPECT_EQ(apart.force, Vector::Zero());
     EXPECT_EQ(apart.law.springAfter, Vector::Zero());
     EXPECT_EQ(apart.power, 0.0);

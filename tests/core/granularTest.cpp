@@ -859,7 +859,8 @@ TEST(ContactEnergy, HandedOverContactsTallyAsTheUninterruptedRun)
             if (withForces)
             {
                 second->setWallContact(i, 0, first->wallSpring(i, 0),
-                                       first->wallContact(i, 0).force);
+                                       first->wallContact(i, 0).force,
+                                       first->wallApproachSpeed(i, 0));
             }
             else
             {

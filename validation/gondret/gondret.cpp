@@ -14,6 +14,11 @@
 // the wall with its free-fall speed and leaves it with about e_dry times
 // that (0.968 with Basset, 0.971 without: the added mass and the history
 // take part in the 16 us contact that was calibrated for m_p alone).
+// Two more runs, with and without F_H, are wet (riser::WetRestitution, the library's
+// `wet { type stokesRestitution; }`): each contact gets the damping of
+// e = e_dry exp(-35/St), St = (rho_p + rho_f/2) v d/(9 mu) of its approach
+// speed (Legendre et al., Chem. Eng. Sci. 61, 3543, 2006), none below
+// St 10, calibrated, as in the library, for the inertia m_p + C_A m_f.
 //
 // Release from rest at a gap of 1 m. Without the Basset force the sphere
 // reaches its terminal speed within 0.2 m; with it, it approaches that speed
@@ -42,8 +47,8 @@
 //   experiment: the digitized gap h(t) given as the first argument.
 //
 // usage: gondret <gap csv> <output folder>
-// writes <output folder>/curve_basset.dat and curve_noBasset.dat (t after
-// the first contact, gap, v) and prints the comparison (Allrun keeps it in
+// writes <output folder>/curve_<variant>.dat (basset, noBasset, wet,
+// wetNoBasset: t after the first contact, gap, v) and prints the comparison (Allrun keeps it in
 // results/summary.txt)
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "basset/bassetCoefficient.hpp"
@@ -87,14 +92,21 @@ class SphereOnFlatWall
 public:
     using Value = double;
 
-    SphereOnFlatWall(const Scene& s, bool basset, bool fluid = true)
+    SphereOnFlatWall(const Scene& s, bool basset, bool fluid = true, bool wet = false)
     :
         s_(s), fluid_(fluid),
         KH_(basset && fluid ? classicalBassetCoefficient*s.d*s.d/4.0*std::sqrt(M_PI*s.rhoF*s.mu) : 0.0),
         unbounded_(0.0),
-        contact_(HertzMindlinParameters{s.sphere, s.wall, s.eDry, 1.0, 0.0}),
-        body_(s.R(), s.mp())
+        contact_(lawOf(s, wet)),
+        body_(s.R(), wet ? s.mp() + s.CA*s.mf() : s.mp())
     {}
+
+    static HertzMindlinParameters lawOf(const Scene& s, bool wet)
+    {
+        HertzMindlinParameters p{s.sphere, s.wall, s.eDry, 1.0, 0.0};
+        if (wet) p.wet = WetRestitution{s.mu};
+        return p;
+    }
 
     double mass() const { return s_.mp(); }
     double addedMass() const { return fluid_ ? s_.CA*s_.mf() : 0.0; }
@@ -122,11 +134,20 @@ public:
         const double overlap = s_.R() - z;
         if (overlap <= 0.0) return 0.0;
         const Vector n(0.0, 0.0, -1.0);       // centre -> wall
-        return contact_.force(body_, overlap, n, Vector(0.0, 0.0, v), Vector::Zero()).normal.z();
+        // the approach speed: the last committed velocity out of contact
+        const double vIn = std::isnan(vIn_) ? -v_ : vIn_;
+        return contact_.force(body_, overlap, n, Vector(0.0, 0.0, v), Vector::Zero(), vIn)
+               .normal.z();
     }
 
     void place(double t, double z, double v) { t_ = t; z_ = z; v_ = v; }
-    void commit(double t, double v) { place(t, height(v, t), v); }
+    void commit(double t, double v)
+    {
+        const double vBefore = v_;
+        place(t, height(v, t), v);
+        if (gap() > 0.0) vIn_ = NAN;
+        else if (std::isnan(vIn_)) vIn_ = -vBefore;
+    }
     double gap() const { return z_ - s_.R(); }
     double contactTime(double v) const { return contact_.contactTime(body_, v); }
 
@@ -138,6 +159,7 @@ private:
     HertzMindlin contact_;
     ContactBody body_;
     double t_ = 0.0, z_ = 0.0, v_ = 0.0;
+    double vIn_ = NAN;      //!< approach speed of the contact in progress
 };
 
 struct Sample { double t, gap, v; };
@@ -159,9 +181,9 @@ struct Run
 
 //- Release from rest, follow the sphere to tAfter past the first contact
 Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAfter,
-           long outputEvery)
+           long outputEvery, bool wet = false)
 {
-    SphereOnFlatWall law(s, basset);
+    SphereOnFlatWall law(s, basset, true, wet);
     law.place(0.0, s.releaseGap + s.R(), 0.0);
     // without the Basset force (K_H = 0) the history is carried but unused
     const long window = basset ? std::max(2L, std::lround(windowTime/h)) : 2L;
@@ -337,13 +359,16 @@ int main(int argc, char* argv[])
     say("experiment: approach speed %.4f m/s (least-squares slope of its %d points before contact)\n\n",
         vExp, n);
 
-    struct Variant { const char* name; bool basset; };
-    const Variant variants[] = {{"basset", true}, {"noBasset", false}};
-    Run runs[2];
-    for (int k = 0; k < 2; ++k)
+    struct Variant { const char* name; const char* title; bool basset; bool wet; };
+    const Variant variants[] =
+        {{"basset", "with Basset", true, false}, {"noBasset", "no Basset", false, false},
+         {"wet", "wet, Basset", true, true}, {"wetNoBasset", "wet, no Basset", false, true}};
+    const int nVariants = sizeof variants/sizeof variants[0];
+    std::vector<Run> runs;
+    for (const Variant& v : variants)
     {
-        runs[k] = bounce(s, variants[k].basset, h, windowTime, tAfter, outputEvery);
-        writeCurve(runs[k], out + "/curve_" + variants[k].name + ".dat", -0.05, tAfter, 10);
+        runs.push_back(bounce(s, v.basset, h, windowTime, tAfter, outputEvery, v.wet));
+        writeCurve(runs.back(), out + "/curve_" + v.name + ".dat", -0.05, tAfter, 10);
     }
 
     auto apexGap = [](const Run& r, int a) { return a < int(r.apexes.size()) ? r.apexes[a].gap*1e3 : NAN; };
@@ -360,36 +385,50 @@ int main(int argc, char* argv[])
         }
         return std::sqrt(sq/exp.t.size());
     };
+    //- a row: the label, the experiment's column, then each variant's value
+    auto row = [&](const char* label, const std::string& expCol, const char* fmt, auto value)
+    {
+        say("%-32s %18s", label, expCol.c_str());
+        for (const Run& r : runs) say(fmt, value(r));
+        say("\n");
+    };
+    auto text = [](const char* fmt, auto... args)
+    {
+        char b[64];
+        std::snprintf(b, sizeof b, fmt, args...);
+        return std::string(b);
+    };
 
-    say("%-32s %18s %12s %12s\n", "", "exp. (digitized)", "with Basset", "no Basset");
-    say("%-32s %18.3f %12.4f %12.4f\n", "impact speed [m/s]", 0.585,
-        -runs[0].contacts[0].vTouch, -runs[1].contacts[0].vTouch);
+    say("%-32s %18s", "", "exp. (digitized)");
+    for (const Variant& v : variants) say(" %14s", v.title);
+    say("\n");
+    row("impact speed [m/s]", text("%.3f", 0.585), " %14.4f",
+        [](const Run& r) { return -r.contacts[0].vTouch; });
     for (int a = 0; a < 3; ++a)
     {
         const double e = a < int(expApex.size()) ? expApex[a].gap*1e3 : NAN;
         const double te = a < int(expApex.size()) ? expApex[a].t : NAN;
-        char label[64];
-        std::snprintf(label, sizeof label, "apex %d gap [mm]", a + 1);
-        say("%-32s %8.2f (%7.3f) %12.3f %12.3f\n", label, published[a].gap*1e3, e,
-            apexGap(runs[0], a), apexGap(runs[1], a));
-        std::snprintf(label, sizeof label, "apex %d time [s]", a + 1);
-        say("%-32s %8.3f (%7.4f) %12.4f %12.4f\n", label, published[a].t, te,
-            apexTime(runs[0], a), apexTime(runs[1], a));
+        row(text("apex %d gap [mm]", a + 1).c_str(), text("%.2f (%7.3f)", published[a].gap*1e3, e),
+            " %14.3f", [&](const Run& r) { return apexGap(r, a); });
+        row(text("apex %d time [s]", a + 1).c_str(), text("%.3f (%7.4f)", published[a].t, te),
+            " %14.4f", [&](const Run& r) { return apexTime(r, a); });
     }
-    double worst[2];
-    const double rms[2] = {rmsGap(runs[0], &worst[0]), rmsGap(runs[1], &worst[1])};
-    say("%-32s %18s %12.3f %12.3f\n", "RMS gap difference [mm]", "-", rms[0]*1e3, rms[1]*1e3);
-    say("%-32s %18s %12.3f %12.3f\n", "largest gap difference [mm]", "-", worst[0]*1e3, worst[1]*1e3);
+    std::vector<double> rms, worst(nVariants);
+    for (int k = 0; k < nVariants; ++k) rms.push_back(rmsGap(runs[k], &worst[k]));
+    int k = 0;
+    row("RMS gap difference [mm]", "-", " %14.3f", [&](const Run&) { return rms[k++]*1e3; });
+    k = 0;
+    row("largest gap difference [mm]", "-", " %14.3f", [&](const Run&) { return worst[k++]*1e3; });
     say("  (over its %zu points, t = %.4f .. %.4f s; t = 0 at the first contact of each;"
         " published values first, digitized maxima in brackets)\n",
         exp.t.size(), exp.t.front(), exp.t.back());
-    say("%-32s %18s %12.2f %12.2f\n", "CPU time [s]", "-", runs[0].cpu, runs[1].cpu);
-    say("%-32s %18s %12ld %12ld\n", "steps (release to +0.25 s)", "-", runs[0].steps, runs[1].steps);
+    row("CPU time [s]", "-", " %14.2f", [](const Run& r) { return r.cpu; });
+    row("steps (release to +0.25 s)", "-", " %14ld", [](const Run& r) { return r.steps; });
 
-    for (int k = 0; k < 2; ++k)
+    for (int k = 0; k < nVariants; ++k)
     {
         say("\ncontacts %s (t after the first; St = rho_p d v_in/(9 mu); e = v_out/v_in over the"
-            " contact):\n", k == 0 ? "with Basset" : "without Basset");
+            " contact):\n", variants[k].title);
         for (size_t c = 0; c < runs[k].contacts.size() && c < 6; ++c)
         {
             const Contact& C = runs[k].contacts[c];

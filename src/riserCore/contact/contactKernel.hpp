@@ -24,6 +24,10 @@
 //   E_el  = 2/5 k_n delta_n^(5/2) + 1/2 k_t |s|^2 (energy in the springs,
 //           elasticEnergy, for a caller that tallies it)
 //
+// vIn is the contact's normal approach speed at its start (U.n at its first
+// evaluation), which a wet law's damping depends on (contact/
+// wetRestitution.hpp); a dry law ignores it.
+//
 // The spring kept after the step is the law's (after the Coulomb cap). dt = 0
 // evaluates the force of a contact handed over with its spring, without
 // stepping it.
@@ -92,11 +96,12 @@ struct ContactStep
 
 //- One contact over a step dt: sides i and j with overlap along n (from i
 //  towards j; apart, overlap <= 0: all zero), body the equivalent R and M
-//  the law sees, kept the spring the contact kept from its previous step
+//  the law sees, kept the spring the contact kept from its previous step,
+//  vIn its normal approach speed at its start
 inline ContactStep stepContact(const HertzMindlin& law, const ContactBody& body,
                                double overlap, const Vector& n,
                                const ContactSide& i, const ContactSide& j,
-                               const Vector& kept, double dt)
+                               const Vector& kept, double vIn, double dt)
 {
     requireNonNegative("riser::stepContact", "dt", dt);
     ContactStep c;
@@ -110,7 +115,7 @@ inline ContactStep stepContact(const HertzMindlin& law, const ContactBody& body,
         return c;
     }
     const Vector Ut = c.U - c.U.dot(n)*n;
-    c.law = law.force(body, overlap, n, c.U, turnedSpring(kept, n) + dt*Ut);
+    c.law = law.force(body, overlap, n, c.U, turnedSpring(kept, n) + dt*Ut, vIn);
     c.force = c.law.normal + c.law.tangential;
     c.torqueI = (i.radius*n).cross(c.law.tangential);
     c.torqueJ = (j.radius*n).cross(c.law.tangential);

@@ -32,15 +32,25 @@
 // restitution e_t by the linear-oscillator relation
 // zeta_t = -ln e_t / sqrt(pi^2 + ln^2 e_t).
 //
+// Wet (optional, wetRestitution.hpp): the contact in a liquid rebounds with
+// e(St) of its normal approach speed at its start, so each contact gets the
+// damping ratio of that restitution; force() then needs the approach speed
+// (a contact whose approach speed is not known is an error, not a dry one).
+// Needs tensionAllowed (e = 0 has no finite damping ratio otherwise).
+//
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_CONTACT_HERTZMINDLIN_HPP
 #define RISERCORE_CONTACT_HERTZMINDLIN_HPP
 
 #include "contact/restitution.hpp"
+#include "contact/wetRestitution.hpp"
 
 #include "vector.hpp"
 
 #include <cmath>
+#include <limits>
+#include <optional>
+#include <stdexcept>
 
 namespace riser {
 
@@ -88,6 +98,7 @@ struct HertzMindlinParameters
     double tangentialRestitution;  //!< e_t in (0, 1]
     double friction;        //!< Coulomb coefficient mu_c >= 0
     NormalForceFloor floor = NormalForceFloor::tensionAllowed;
+    std::optional<WetRestitution> wet = std::nullopt;  //!< in a liquid: e(St)
 };
 
 //- The particle in contact: R_eq = R_p and M_eq against the wall, M_eq the
@@ -126,14 +137,50 @@ public:
         alphaN_(dampingRatio(p.normalRestitution, p.floor)),
         zetaT_(linearDampingRatio(p.tangentialRestitution)),
         friction_(p.friction),
-        floor_(p.floor)
+        floor_(p.floor),
+        eDry_(p.normalRestitution),
+        wet_(p.wet)
     {
         requireNonNegative("riser::HertzMindlin", "mu_c", p.friction);
+        if (wet_)
+        {
+            wet_->check();
+            if (floor_ != NormalForceFloor::tensionAllowed)
+            {
+                throw std::invalid_argument
+                (
+                    "riser::HertzMindlin: a wet contact needs the normal force"
+                    " floor tensionAllowed (e = 0 has no finite damping ratio"
+                    " with noTension)"
+                );
+            }
+        }
     }
 
     double equivalentYoungModulus() const { return Eeq_; }
     double equivalentShearModulus() const { return Geq_; }
+    //- The dry contact's normal damping ratio (of e_n)
     double normalDampingRatio() const { return alphaN_; }
+
+    //- In a liquid (wet)?
+    const std::optional<WetRestitution>& wet() const { return wet_; }
+
+    //- The normal damping ratio of a contact of body b that began with
+    //  normal approach speed vIn (towards the wall or the other body): the
+    //  dry one, or wet that of e(St) (vIn NaN: an error)
+    double normalDampingRatio(const ContactBody& b, double vIn) const
+    {
+        if (!wet_) return alphaN_;
+        if (!std::isfinite(vIn))
+        {
+            throw std::invalid_argument
+            (
+                "riser::HertzMindlin: a wet contact evaluated without its"
+                " approach speed"
+            );
+        }
+        return wet_->dampingRatio(eDry_, wet_->stokesNumber(b.mass, b.radius, vIn));
+    }
 
     //- k_n = 4/3 E_eq sqrt(R_eq)
     double normalStiffness(const ContactBody& b) const
@@ -150,9 +197,10 @@ public:
 
     //- Force on body b for overlap deltaN >= 0 along unit normal n (from
     //  the centre towards the wall), contact-point velocity U relative to
-    //  the wall, and tangential spring deltaT.
+    //  the wall, tangential spring deltaT, and the normal approach speed
+    //  vIn at the contact's start (used by a wet law only).
     ContactForce force(const ContactBody& b, double deltaN, const Vector& n,
-                       const Vector& U, const Vector& deltaT) const
+                       const Vector& U, const Vector& deltaT, double vIn) const
     {
         ContactForce c{Vector::Zero(), Vector::Zero(), Vector::Zero(), false};
         if (deltaN <= 0.0) return c;
@@ -161,7 +209,7 @@ public:
         const double Un = U.dot(n);
         const double sqrtDelta = std::sqrt(deltaN);
         double fn = kn*deltaN*sqrtDelta
-                  + alphaN_*std::sqrt(kn*b.mass)*std::sqrt(sqrtDelta)*Un;
+                  + normalDampingRatio(b, vIn)*std::sqrt(kn*b.mass)*std::sqrt(sqrtDelta)*Un;
         if (floor_ == NormalForceFloor::noTension && fn < 0.0) fn = 0.0;
         c.normal = -fn*n;
 
@@ -190,9 +238,19 @@ public:
         return c;
     }
 
+    //- The same for a dry law (a wet law: an error, as its approach speed
+    //  is not given)
+    ContactForce force(const ContactBody& b, double deltaN, const Vector& n,
+                       const Vector& U, const Vector& deltaT) const
+    {
+        return force(b, deltaN, n, U, deltaT, std::numeric_limits<double>::quiet_NaN());
+    }
+
 private:
     double Eeq_, Geq_, alphaN_, zetaT_, friction_;
     NormalForceFloor floor_;
+    double eDry_;
+    std::optional<WetRestitution> wet_;
 };
 
 } // namespace riser

@@ -258,6 +258,7 @@ public:
         slot.spring = s;
         slot.touching = true;
         slot.state = WallContactState{true, 0.0, 0.0};
+        slot.approachSpeed = std::numeric_limits<double>::quiet_NaN();
         slot.handedOver = true;
         slot.forceKnown = false;
         forcesValid_ = false;
@@ -265,12 +266,15 @@ public:
     }
 
     //- The same, with the wall's force F on the grain at the last
-    //  evaluation of the run handed over
-    void setWallContact(std::size_t i, std::size_t w, const Vector& s, const Vector& F)
+    //  evaluation of the run handed over and the contact's normal approach
+    //  speed vIn at its start
+    void setWallContact(std::size_t i, std::size_t w, const Vector& s, const Vector& F,
+                        double vIn)
     {
         setWallSpring(i, w, s);
         WallSlot& slot = wallSlots_[i*walls_.size() + w];
         slot.state.force = F;
+        slot.approachSpeed = vIn;
         slot.forceKnown = true;
     }
 
@@ -326,6 +330,13 @@ public:
     const Vector& wallSpring(std::size_t i, std::size_t w) const
     {
         return wallSlots_.at(i*walls_.size() + w).spring;
+    }
+
+    //- The normal approach speed at the start of grain i's contact with
+    //  wall w (NaN: none in progress)
+    double wallApproachSpeed(std::size_t i, std::size_t w) const
+    {
+        return wallSlots_.at(i*walls_.size() + w).approachSpeed;
     }
 
     //- Grain i's contact with wall w at the last force evaluation
@@ -525,6 +536,8 @@ private:
         Vector spring = Vector::Zero();
         bool touching = false;
         WallContactState state{false, 0.0, 0.0};
+        //! normal approach speed at the contact's start (NaN: not known)
+        double approachSpeed = std::numeric_limits<double>::quiet_NaN();
         bool handedOver = false;    //!< set before the first step
         bool forceKnown = false;    //!< (when handedOver)
     };
@@ -568,7 +581,7 @@ private:
                 c.force = stepContact
                 (
                     *pairLaw_, pairBody(a.radius, a.mass, b.radius, b.mass),
-                    geo.overlap, geo.normal, side(a), side(b), c.spring, 0.0
+                    geo.overlap, geo.normal, side(a), side(b), c.spring, c.approachSpeed, 0.0
                 ).force;
             }
             c.handedOver = false;
@@ -584,12 +597,17 @@ private:
                 slot.state.overlap = cp.overlap;
                 slot.state.normal = cp.normal;
                 slot.state.wallVelocity = cp.velocity;
+                if (std::isnan(slot.approachSpeed))
+                {
+                    slot.approachSpeed =
+                        wallContactVelocity(p, cp.normal, cp.velocity).dot(cp.normal);
+                }
                 if (!slot.forceKnown)
                 {
                     const ContactStep f = stepContact
                     (
-                        *wallLaw_, ContactBody(p.radius, p.mass), cp.overlap,
-                        cp.normal, side(p), wallSide(cp.velocity), slot.spring, 0.0
+                        *wallLaw_, ContactBody(p.radius, p.mass), cp.overlap, cp.normal,
+                        side(p), wallSide(cp.velocity), slot.spring, slot.approachSpeed, 0.0
                     );
                     slot.state.force = f.force;
                     slot.state.normalForce = f.law.normal.norm();
@@ -718,15 +736,16 @@ private:
                 continue;
             }
             const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
-            const ContactStep c = stepContact
-            (
-                *pairLaw_, body, geo.overlap, geo.normal, side(a), side(b), cand.spring, dt
-            );
-            if (!cand.touching) ++pairBegun_;
             if (!cand.touching || std::isnan(cand.approachSpeed))
             {
-                cand.approachSpeed = c.U.dot(geo.normal);
+                cand.approachSpeed = pairVelocity(a, b, geo.normal).dot(geo.normal);
             }
+            const ContactStep c = stepContact
+            (
+                *pairLaw_, body, geo.overlap, geo.normal, side(a), side(b), cand.spring,
+                cand.approachSpeed, dt
+            );
+            if (!cand.touching) ++pairBegun_;
             force_[cand.i] += c.force;
             force_[cand.j] -= c.force;
             if (rotation_)
@@ -768,17 +787,23 @@ private:
                     wallEnergy_[i] -= 0.5*dt*workBefore;
                     slot.touching = false;
                     slot.spring.setZero();
+                    slot.approachSpeed = std::numeric_limits<double>::quiet_NaN();
                     slot.state = WallContactState{false, cp.overlap, 0.0};
                     slot.state.velocity = p.v - cp.velocity;
                     slot.handedOver = false;
                     continue;
                 }
                 if (!slot.touching) ++wallBegun_;
+                if (!slot.touching || std::isnan(slot.approachSpeed))
+                {
+                    slot.approachSpeed =
+                        wallContactVelocity(p, cp.normal, cp.velocity).dot(cp.normal);
+                }
                 const ContactBody body(p.radius, p.mass);
                 const ContactStep c = stepContact
                 (
                     *wallLaw_, body, cp.overlap, cp.normal,
-                    side(p), wallSide(cp.velocity), slot.spring, dt
+                    side(p), wallSide(cp.velocity), slot.spring, slot.approachSpeed, dt
                 );
                 force_[i] += c.force;
                 wallForce_ += c.force;

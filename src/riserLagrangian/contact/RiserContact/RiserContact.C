@@ -15,6 +15,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
@@ -27,16 +28,37 @@ Foam::RiserContact<CloudType>::readWallLaw() const
     {
         return nullptr;
     }
-    return autoPtr<riser::HertzMindlin>
-    (
-        new riser::HertzMindlin
+    riser::HertzMindlinParameters law =
+        modelEntries::contactParameters
         (
-            modelEntries::contactParameters
-            (
-                this->coeffDict(), this->owner().constProps().dict()
-            )
-        )
-    );
+            this->coeffDict(), this->owner().constProps().dict()
+        );
+    law.wet = wetContact(this->coeffDict());
+    return autoPtr<riser::HertzMindlin>(new riser::HertzMindlin(law));
+}
+
+
+template<class CloudType>
+std::optional<riser::WetRestitution>
+Foam::RiserContact<CloudType>::wetContact(const dictionary& parent) const
+{
+    if (!parent.found("wet", false))
+    {
+        return std::nullopt;
+    }
+    // the carrier's dynamic viscosity, one value (the Stokes number of an
+    // impact is the contact's, not the cell's)
+    const volScalarField& mu = this->owner().mu();
+    const scalar muMin = gMin(mu.primitiveField());
+    const scalar muMax = gMax(mu.primitiveField());
+    if (!(muMin > 0) || muMax - muMin > 1e-9*muMax)
+    {
+        FatalIOErrorInFunction(parent.subDict("wet"))
+            << "entry 'wet': the carrier's dynamic viscosity " << mu.name()
+            << " lies in [" << muMin << ", " << muMax << "] Pa s; the wet"
+            << " restitution needs one positive value" << exit(FatalIOError);
+    }
+    return modelEntries::wetContact(parent, this->coeffDict(), muMax);
 }
 
 
@@ -128,16 +150,39 @@ Foam::RiserContact<CloudType>::RiserContact
 {
     if (this->coeffDict().found("pairs"))
     {
-        pairLaw_.reset
-        (
-            new riser::HertzMindlin
+        riser::HertzMindlinParameters law =
+            modelEntries::pairContactParameters
             (
-                modelEntries::pairContactParameters
-                (
-                    this->coeffDict(), this->owner().constProps().dict()
-                )
-            )
-        );
+                this->coeffDict(), this->owner().constProps().dict()
+            );
+        law.wet = wetContact(this->coeffDict().subDict("pairs"));
+        if (law.wet && !riserCloud)
+        {
+            FatalIOErrorInFunction(this->coeffDict().subDict("pairs"))
+                << "entry 'wet' of pairs in a stock colliding cloud: its pair"
+                << " contacts keep no approach speed; wet pairs need the riser"
+                << " cloud (riserParcelFoam, riserCoupledFoam)"
+                << exit(FatalIOError);
+        }
+        pairLaw_.reset(new riser::HertzMindlin(law));
+    }
+    // the Stokes number of the wet restitution (Legendre et al. 2006) is
+    // built on m_p + m_f/2, the inertia the contacts accelerate with C_A 1/2
+    if
+    (
+        (
+            (wallLaw_.valid() && wallLaw_->wet())
+         || (pairLaw_.valid() && pairLaw_->wet())
+        )
+     && mag(addedMassCoeff_ - 0.5) > SMALL
+    )
+    {
+        FatalIOErrorInFunction(this->coeffDict())
+            << "entry 'wet' with the added-mass coefficient C_A = "
+            << addedMassCoeff_ << ": its Stokes number is built on the"
+            << " inertia m_p + m_f/2 (Legendre et al. 2006), which the contacts"
+            << " accelerate with riserAddedMass { CA 0.5; } among the particle"
+            << " forces" << exit(FatalIOError);
     }
 
     // the riser must exist: FatalError here rather than at the first step
@@ -170,7 +215,18 @@ Foam::RiserContact<CloudType>::RiserContact
     {
         Info<< "off";
     }
-    Info<< ", pair contact " << (pairLaw_.valid() ? "on" : "off")
+    if (wallLaw_.valid() && wallLaw_->wet())
+    {
+        Info<< ", wet (e = e_n exp(-" << wallLaw_->wet()->stokesScale
+            << "/St), none below St " << wallLaw_->wet()->criticalStokes << ")";
+    }
+    Info<< ", pair contact " << (pairLaw_.valid() ? "on" : "off");
+    if (pairLaw_.valid() && pairLaw_->wet())
+    {
+        Info<< " (wet: e = e_n exp(-" << pairLaw_->wet()->stokesScale
+            << "/St), none below St " << pairLaw_->wet()->criticalStokes << ")";
+    }
+    Info
         << ", rotation " << rotation_
         << ", inertia m_p + " << addedMassCoeff_ << " m_f" << endl;
 }
@@ -355,7 +411,9 @@ void Foam::RiserContact<CloudType>::collidePairs()
             riser::stepContact
             (
                 *pairLaw_, riser::pairBody(Rp, mp, Rq, mq), geo.overlap, geo.normal,
-                contactSide(p), contactSide(q), toCore(spring), dt
+                contactSide(p), contactSide(q), toCore(spring),
+                // (no approach speed kept: a wet pair law is refused here)
+                std::numeric_limits<scalar>::quiet_NaN(), dt
             );
         spring = fromCore(c.law.springAfter);
         q.collisionRecords().matchPairRecord(p.origProc(), p.origId()).collisionData() =
@@ -500,11 +558,14 @@ void Foam::RiserContact<CloudType>::collide()
         // the tangential spring, kept in the current tangent plane
         vector& spring =
             p.collisionRecords().matchWallRecord(0.99*Rp*n, Rp).collisionData();
+        // the normal approach speed at the contact's start (a new one: now)
+        const scalar approachSpeed = event ? event->normalSpeedIn : (p.U() - Uwall) & n;
         const riser::ContactStep c =
             riser::stepContact
             (
                 *wallLaw_, riser::ContactBody(Rp, mEff), overlap, toCore(n),
-                contactSide(p), riser::wallSide(cp.velocity), toCore(spring), dt
+                contactSide(p), riser::wallSide(cp.velocity), toCore(spring),
+                approachSpeed, dt
             );
         spring = fromCore(c.law.springAfter);
 

@@ -495,7 +495,10 @@ Foam::RiserContact<CloudType>::meshFreeContacts
                     ownIndex[a] >= 0 ? wallRecord(*ownParcel[ownIndex[a]]) : nullptr;
                 if (e)
                 {
-                    grains.setWallContact(a, 0, toCore(m.wallSpring), toCore(e->force));
+                    grains.setWallContact
+                    (
+                        a, 0, toCore(m.wallSpring), toCore(e->force), e->normalSpeedIn
+                    );
                 }
                 else
                 {
