@@ -65,22 +65,14 @@ struct WetRestitution
         return v > 0.0 ? inertia*v/(6.0*M_PI*viscosity*radius*radius) : 0.0;
     }
 
-    //- -ln(e/e_dry) at Stokes number St >= St_c: b/St
-    double logLoss(double St) const { return stokesScale/St; }
-
-    //- e(St) for the dry restitution eDry
-    double restitution(double eDry, double St) const
-    {
-        return St < criticalStokes || St <= 0.0 ? 0.0 : eDry*std::exp(-logLoss(St));
-    }
-
     //- Damping ratio of the Hertz–Tsuji contact (tension allowed) that
-    //  rebounds with e(St): sqrt(5) L / sqrt(pi^2 + L^2), L = -ln e; e = 0:
+    //  rebounds with e(St) for the dry restitution eDry: sqrt(5) L /
+    //  sqrt(pi^2 + L^2) with L = -ln e = b/St - ln eDry; below St_c (e = 0):
     //  its limit sqrt(5)
     double dampingRatio(double eDry, double St) const
     {
         if (St < criticalStokes || St <= 0.0) return std::sqrt(5.0);
-        const double L = logLoss(St) - std::log(eDry);
+        const double L = stokesScale/St - std::log(eDry);
         return std::sqrt(5.0)*L/std::sqrt(M_PI*M_PI + L*L);
     }
 };
