@@ -3,6 +3,8 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "contact/hertzMindlin.hpp"
 
+#include "normalImpact.hpp"
+
 #include <gtest/gtest.h>
 #include <cmath>
 
@@ -14,45 +16,26 @@ namespace {
 // 1e-19 of the particle's compliance in the tests below.
 const ElasticMaterial rigidWall(1e30, 0.3);
 
-struct ImpactResult { double deltaMax, forceMax, duration, reboundSpeed; };
-
 // Head-on impact at speed v on a wall below the particle, integrated by the
-// test itself with classical RK4 at a step of duration/steps; the contact
-// law supplies the force only. The particle starts touching (delta = 0).
-ImpactResult normalImpact(const HertzMindlin& law, const ContactBody& body, double v,
-                          double tcGuess, int steps = 20000)
+// test itself (oracles/normalImpact.hpp) with classical RK4 at a step of
+// duration/steps; the contact law supplies the force only. The particle
+// starts touching (delta = 0).
+struct Impact { double deltaMax, forceMax, duration, reboundSpeed; };
+
+Impact normalImpact(const HertzMindlin& law, const ContactBody& body, double v,
+                    double tcGuess, int steps = 20000)
 {
-    const double mass = body.mass;
     const Vector n(0, 0, -1);                   // from the centre towards the wall
-    const double dt = tcGuess/steps;
-    double delta = 0.0, u = v;                  // u = approach speed = U . n
-    auto acc = [&](double d, double uu)
-    {
-        return law.force(body, d, n, uu*n, Vector::Zero()).normal.dot(n)/mass;  // du/dt = F.n/m
-    };
-    ImpactResult r{0, 0, 0, 0};
-    double t = 0.0;
-    for (int i = 0; i < 100*steps; ++i)
-    {
-        const double k1d = u,              k1u = acc(delta, u);
-        const double k2d = u + 0.5*dt*k1u, k2u = acc(delta + 0.5*dt*k1d, k2d);
-        const double k3d = u + 0.5*dt*k2u, k3u = acc(delta + 0.5*dt*k2d, k3d);
-        const double k4d = u + dt*k3u,     k4u = acc(delta + dt*k3d, k4d);
-        const double dNew = delta + dt/6.0*(k1d + 2*k2d + 2*k3d + k4d);
-        const double uNew = u + dt/6.0*(k1u + 2*k2u + 2*k3u + k4u);
-        if (dNew <= 0.0 && uNew < 0.0)
+    const ImpactResult r = ::normalImpact
+    (
+        [&](double d, double uu)                // du/dt = F.n/m
         {
-            const double s = delta/(delta - dNew);
-            r.duration = t + s*dt;
-            r.reboundSpeed = -(u + s*(uNew - u));
-            return r;
-        }
-        delta = dNew; u = uNew; t += dt;
-        r.deltaMax = std::max(r.deltaMax, delta);
-        r.forceMax = std::max(r.forceMax, law.force(body, delta, n, u*n, Vector::Zero()).normal.norm());
-    }
-    ADD_FAILURE() << "contact did not end";
-    return r;
+            return law.force(body, d, n, uu*n, Vector::Zero()).normal.dot(n)/body.mass;
+        },
+        v, tcGuess/steps, 100L*steps
+    );
+    if (!r.ended) ADD_FAILURE() << "contact did not end";
+    return Impact{r.deltaMax, body.mass*r.accelMax, r.duration, r.reboundSpeed};
 }
 
 // Chung & Ooi, Granular Matter 13, 643 (2011), test 2: aluminium-alloy
@@ -87,7 +70,7 @@ TEST(HertzMindlin, ChungOoiTest2ElasticImpact)
     const double v = 0.2;
     const HertzImpact ref(b.mass, 70e9/(1.0 - 0.09), b.radius, v);
     EXPECT_NEAR(law.contactTime(b, v)/ref.duration, 1.0, 1e-12);
-    const ImpactResult r = normalImpact(law, b, v, ref.duration);
+    const Impact r = normalImpact(law, b, v, ref.duration);
     EXPECT_NEAR(r.deltaMax/ref.deltaMax, 1.0, 0.005);
     EXPECT_NEAR(r.forceMax/ref.forceMax, 1.0, 0.005);
     EXPECT_NEAR(r.duration/ref.duration, 1.0, 0.005);
@@ -110,7 +93,7 @@ TEST(HertzMindlin, RestitutionMatchesTargetAtAllSpeeds)
             for (double v : {0.01, 0.1, 1.0, 10.0})
             {
                 // heavy damping lengthens the contact: allow up to 3 t_c
-                const ImpactResult r = normalImpact(law, b, v, 3.0*law.contactTime(b, v), 60000);
+                const Impact r = normalImpact(law, b, v, 3.0*law.contactTime(b, v), 60000);
                 EXPECT_NEAR(r.reboundSpeed/v, e, 0.005*e)
                     << "e = " << e << ", v = " << v
                     << ", floor " << (floor == NormalForceFloor::noTension ? "noTension" : "tension");

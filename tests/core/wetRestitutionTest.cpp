@@ -14,6 +14,8 @@
 #include "granular/granularSystem.hpp"
 #include "wall/planeWall.hpp"
 
+#include "normalImpact.hpp"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -37,38 +39,25 @@ HertzMindlin wetLaw(double mu, const ElasticMaterial& other = glass)
 double legendre(double St) { return eDry*std::exp(-35.0/St); }
 
 //- Normal impact of a body (R, M) at speed v on the wall, the overlap and
-//  its rate stepped by classical RK4 with the force of the kernel (dt = 0:
-//  evaluation), 4,000 steps per Hertz contact time. Returns the speed of
-//  separation over v, 0 if the body has not left after 100 contact times.
+//  its rate stepped by classical RK4 (oracles/normalImpact.hpp) with the
+//  force of the kernel (dt = 0: evaluation), 4,000 steps per Hertz contact
+//  time. Returns the speed of separation over v, 0 if the body has not
+//  left after 100 contact times.
 double impact(const HertzMindlin& law, const ContactBody& b, double v)
 {
     const Vector n(0.0, 0.0, -1.0);           // from the centre to the wall
-    const double h = law.contactTime(b, v)/4000.0;
-    auto accel = [&](double delta, double u)
-    {
-        // U.n = d(delta)/dt = u; the force on the body along -n slows it
-        const ContactSide body{u*n, Vector::Zero(), b.radius};
-        return stepContact(law, b, delta, n, body, wallSide(Vector::Zero()),
-                           Vector::Zero(), v, 0.0).force.dot(n)/b.mass;
-    };
-    double x = 0.0, u = v;
-    for (int k = 0; k < 400000; ++k)
-    {
-        const double k1x = u,              k1u = accel(x, u);
-        const double k2x = u + 0.5*h*k1u,  k2u = accel(x + 0.5*h*k1x, k2x);
-        const double k3x = u + 0.5*h*k2u,  k3u = accel(x + 0.5*h*k2x, k3x);
-        const double k4x = u + h*k3u,      k4u = accel(x + h*k3x, k4x);
-        const double xNew = x + h/6.0*(k1x + 2.0*k2x + 2.0*k3x + k4x);
-        const double uNew = u + h/6.0*(k1u + 2.0*k2u + 2.0*k3u + k4u);
-        if (xNew <= 0.0 && uNew < 0.0)
+    const ImpactResult r = normalImpact
+    (
+        [&](double delta, double u)
         {
-            const double s = x/(x - xNew);
-            return -(u + s*(uNew - u))/v;
-        }
-        x = xNew;
-        u = uNew;
-    }
-    return 0.0;
+            // U.n = d(delta)/dt = u; the force on the body along -n slows it
+            const ContactSide body{u*n, Vector::Zero(), b.radius};
+            return stepContact(law, b, delta, n, body, wallSide(Vector::Zero()),
+                               Vector::Zero(), v, 0.0).force.dot(n)/b.mass;
+        },
+        v, law.contactTime(b, v)/4000.0, 400000L
+    );
+    return r.ended ? r.reboundSpeed/v : 0.0;
 }
 
 //- The speed at which a sphere of diameter d meets the wall with Stokes
