@@ -385,11 +385,12 @@ int main(int argc, char* argv[])
         }
         return std::sqrt(sq/exp.t.size());
     };
-    //- a row: the label, the experiment's column, then each variant's value
+    //- a row: the label, the experiment's column, then value(k) of each
+    //  variant k
     auto row = [&](const char* label, const std::string& expCol, const char* fmt, auto value)
     {
         say("%-32s %18s", label, expCol.c_str());
-        for (const Run& r : runs) say(fmt, value(r));
+        for (int k = 0; k < nVariants; ++k) say(fmt, value(k));
         say("\n");
     };
     auto text = [](const char* fmt, auto... args)
@@ -403,27 +404,25 @@ int main(int argc, char* argv[])
     for (const Variant& v : variants) say(" %14s", v.title);
     say("\n");
     row("impact speed [m/s]", text("%.3f", 0.585), " %14.4f",
-        [](const Run& r) { return -r.contacts[0].vTouch; });
+        [&](int k) { return -runs[k].contacts[0].vTouch; });
     for (int a = 0; a < 3; ++a)
     {
         const double e = a < int(expApex.size()) ? expApex[a].gap*1e3 : NAN;
         const double te = a < int(expApex.size()) ? expApex[a].t : NAN;
         row(text("apex %d gap [mm]", a + 1).c_str(), text("%.2f (%7.3f)", published[a].gap*1e3, e),
-            " %14.3f", [&](const Run& r) { return apexGap(r, a); });
+            " %14.3f", [&](int k) { return apexGap(runs[k], a); });
         row(text("apex %d time [s]", a + 1).c_str(), text("%.3f (%7.4f)", published[a].t, te),
-            " %14.4f", [&](const Run& r) { return apexTime(r, a); });
+            " %14.4f", [&](int k) { return apexTime(runs[k], a); });
     }
     std::vector<double> rms, worst(nVariants);
     for (int k = 0; k < nVariants; ++k) rms.push_back(rmsGap(runs[k], &worst[k]));
-    int k = 0;
-    row("RMS gap difference [mm]", "-", " %14.3f", [&](const Run&) { return rms[k++]*1e3; });
-    k = 0;
-    row("largest gap difference [mm]", "-", " %14.3f", [&](const Run&) { return worst[k++]*1e3; });
+    row("RMS gap difference [mm]", "-", " %14.3f", [&](int k) { return rms[k]*1e3; });
+    row("largest gap difference [mm]", "-", " %14.3f", [&](int k) { return worst[k]*1e3; });
     say("  (over its %zu points, t = %.4f .. %.4f s; t = 0 at the first contact of each;"
         " published values first, digitized maxima in brackets)\n",
         exp.t.size(), exp.t.front(), exp.t.back());
-    row("CPU time [s]", "-", " %14.2f", [](const Run& r) { return r.cpu; });
-    row("steps (release to +0.25 s)", "-", " %14ld", [](const Run& r) { return r.steps; });
+    row("CPU time [s]", "-", " %14.2f", [&](int k) { return runs[k].cpu; });
+    row("steps (release to +0.25 s)", "-", " %14ld", [&](int k) { return runs[k].steps; });
 
     for (int k = 0; k < nVariants; ++k)
     {

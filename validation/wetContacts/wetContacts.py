@@ -97,8 +97,7 @@ for variant in ("dry", "wet"):
     last = os.path.join(case, times(case)[-1], "lagrangian/kinematicCloud")
     pairs = sum(ff.read_scalars(os.path.join(last, "pairContacts"))) / 2
     n = len(ff.read_scalars(os.path.join(last, "d")))
-    uBulk = 0.5 * float(open(os.path.join(case, "constant/riserProperties")).read()
-                        .split("uCentre")[1].split(";")[0].split()[-1])
+    uBulk = 0.5 * ff.read_entry(os.path.join(case, "constant/riserProperties"), "uCentre")
     St = stokes(rows["UnIn"])
     result["ores " + variant] = {
         "ores": n, "simulated_s": end, "mean_axial_velocity": float(np.mean(Uz)),

@@ -93,13 +93,20 @@ print("wet pairs in a liquid of 0.02 Pa s: e = e_n exp(-35/St*) of the pair, non
 # liquid. Tolerance 5e-3 of the approach speed, as above (the engine's
 # velocity Verlet at 400 sub-steps a contact).
 muL, rhoL, d = 0.02, 1000.0, 0.01
+
+
+def wet_pairs(case):
+    """wet pairs in case, with the added mass (C_A = 1/2) they need"""
+    props = os.path.join(case, "constant/kinematicCloudProperties")
+    foamfields.edit(props, r"particleForces \{\}", "particleForces { riserAddedMass { CA 0.5; } }")
+    foamfields.set_nested(props, "subModels/riserContactCoeffs/pairs/wet", "{ type stokesRestitution; }")
+
+
 for v in (0.25, 0.05, 0.01):
     name = "wet_v%g" % v
     make(name, RISER, [(-0.0055, 0.0, 0.02), (0.0055, 0.0, 0.02)], [(v, 0.0), (-v, 0.0)],
          (0.76, 1.0, 0.0), end=0.15)
-    props = os.path.join(name, "constant/kinematicCloudProperties")
-    foamfields.edit(props, r"particleForces \{\}", "particleForces { riserAddedMass { CA 0.5; } }")
-    foamfields.set_nested(props, "subModels/riserContactCoeffs/pairs/wet", "{ type stokesRestitution; }")
+    wet_pairs(name)
     foamfields.set_entry(os.path.join(name, "constant/transportProperties"), "nu", muL / rhoL)
     solve(name, RISER)
     U = velocities(name, "0.15")
@@ -266,9 +273,7 @@ else:
 print("wet pairs in the stock colliding cloud: refused (its pairs keep no approach speed)")
 make("stockWet", STOCK, [(-0.0055, 0.0, 0.02), (0.0055, 0.0, 0.02)], [(0.05, 0.0), (-0.05, 0.0)],
      (0.76, 1.0, 0.0))
-props = "stockWet/constant/kinematicCloudProperties"
-foamfields.edit(props, r"particleForces \{\}", "particleForces { riserAddedMass { CA 0.5; } }")
-foamfields.set_nested(props, "subModels/riserContactCoeffs/pairs/wet", "{ type stokesRestitution; }")
+wet_pairs("stockWet")
 refused = cases.run([STOCK, "-case", "stockWet"], "stockWet/log", may_fail=True) is None
 text = open("stockWet/log").read()
 if refused and "entry 'wet' of pairs in a stock colliding cloud" in text:
