@@ -19,6 +19,7 @@ Description
 
 makeRiserForces(basicKinematicCollidingCloud);
 makeRiserInjectionModels(basicKinematicCollidingCloud);
+makeRiserDispersionModels(basicKinematicCollidingCloud);
 makeRiserCloudOnlyRefusals(basicKinematicCollidingCloud);
 makeRiserCollisionSubmodels(basicKinematicCollidingCloud);
 

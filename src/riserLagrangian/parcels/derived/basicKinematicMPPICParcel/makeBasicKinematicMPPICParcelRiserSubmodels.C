@@ -18,6 +18,7 @@ Description
 
 makeRiserForces(basicKinematicMPPICCloud);
 makeRiserInjectionModels(basicKinematicMPPICCloud);
+makeRiserDispersionModels(basicKinematicMPPICCloud);
 makeRiserCloudOnlyRefusals(basicKinematicMPPICCloud);
 
 // ************************************************************************* //

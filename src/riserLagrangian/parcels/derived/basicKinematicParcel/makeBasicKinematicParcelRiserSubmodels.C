@@ -19,6 +19,7 @@ Description
 
 makeRiserForces(basicKinematicCloud);
 makeRiserInjectionModels(basicKinematicCloud);
+makeRiserDispersionModels(basicKinematicCloud);
 makeRiserCloudOnlyRefusals(basicKinematicCloud);
 
 // ************************************************************************* //

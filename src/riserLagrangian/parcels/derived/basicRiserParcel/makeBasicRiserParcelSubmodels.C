@@ -44,6 +44,7 @@ makeParcelSurfaceFilmModels(basicRiserCloud);
 
 makeRiserForces(basicRiserCloud);
 makeRiserInjectionModels(basicRiserCloud);
+makeRiserDispersionModels(basicRiserCloud);
 makeRiserCollisionSubmodels(basicRiserCloud);
 makeParticleForceModelType(RiserBassetForce, basicRiserCloud);
 makeCloudFunctionObjectType(RiserTransportStatistics, basicRiserCloud);

@@ -1,0 +1,181 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "LangevinDispersionRAS.H"
+#include "checkedEntry.H"
+#include "coreVector.H"
+#include "dispersion/langevinSeenVelocity.hpp"
+#include "turbulenceModel.H"
+#include "fvcGrad.H"
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+template<class CloudType>
+Foam::LangevinDispersionRAS<CloudType>::LangevinDispersionRAS
+(
+    const dictionary& dict,
+    CloudType& owner
+)
+:
+    DispersionModel<CloudType>(owner),
+    Sct_(checkedEntry::inRange(coeffs(dict), "Sct", 0.1, true, 10, true, 0.7)),
+    beta_(checkedEntry::inRange(coeffs(dict), "beta", 0, true, 10, true, 1))
+{
+    checkedEntry::allowedKeys(coeffs(dict), {"Sct", "beta"});
+}
+
+
+template<class CloudType>
+Foam::LangevinDispersionRAS<CloudType>::LangevinDispersionRAS
+(
+    const LangevinDispersionRAS<CloudType>& dm
+)
+:
+    DispersionModel<CloudType>(dm),
+    Sct_(dm.Sct_),
+    beta_(dm.beta_)
+{}
+
+
+// * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::dictionary& Foam::LangevinDispersionRAS<CloudType>::coeffs
+(
+    const dictionary& dict
+)
+{
+    const word name(typeName + "Coeffs");
+    return dict.found(name) ? dict.subDict(name) : dictionary::null;
+}
+
+
+template<class CloudType>
+void Foam::LangevinDispersionRAS<CloudType>::cache()
+{
+    // The carrier's turbulence model, looked up at the first step (the
+    // coupled solvers build it after the cloud)
+    const fvMesh& mesh = this->owner().mesh();
+    const word name
+    (
+        IOobject::groupName
+        (
+            turbulenceModel::propertiesName, this->owner().U().group()
+        )
+    );
+    const turbulenceModel* turbulence = mesh.findObject<turbulenceModel>(name);
+    if (!turbulence || turbulence->get<word>("simulationType") == "laminar")
+    {
+        FatalIOErrorInFunction(this->owner().subModelProperties())
+            << "entry 'dispersionModel' = " << typeName << " in the cloud "
+            << this->owner().name() << " needs the carrier's turbulence"
+            << " (k and nut of a RAS model, constant/" << name << "): "
+            << (turbulence ? "the carrier is laminar" : "this solver has no"
+                " turbulence model (riserParcelFoam's analytic carrier is"
+                " laminar)")
+            << ". Use 'dispersionModel none;', or a RAS carrier"
+            << " (riserCoupledFoam, DPMFoam, MPPICFoam,"
+            << " uncoupledKinematicParcelFoam)" << nl << exit(FatalIOError);
+    }
+
+    const tmp<volScalarField> tk(turbulence->k());
+    const tmp<volScalarField> tnut(turbulence->nut());
+    sigma_.reset
+    (
+        new volScalarField("langevinSigma", sqrt(2.0/3.0*max(tk(), dimensionedScalar("zero", tk().dimensions(), 0))))
+    );
+    gradSigma_.reset(new volVectorField("langevinGradSigma", fvc::grad(sigma_())));
+    const volScalarField& sigma = sigma_();
+    TL_.reset
+    (
+        new volScalarField
+        (
+            "langevinTL",
+            tnut()/(Sct_*sqr(sigma) + dimensionedScalar("tiny", sqr(sigma.dimensions()), ROOTVSMALL))
+        )
+    );
+}
+
+
+template<class CloudType>
+Foam::vector Foam::LangevinDispersionRAS<CloudType>::normalVector() const
+{
+    Random& rnd = this->owner().rndGen();
+    const scalar x = rnd.GaussNormal<scalar>();
+    const scalar y = rnd.GaussNormal<scalar>();
+    const scalar z = rnd.GaussNormal<scalar>();
+    return vector(x, y, z);
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+template<class CloudType>
+void Foam::LangevinDispersionRAS<CloudType>::cacheFields(const bool store)
+{
+    if (store)
+    {
+        cache();
+    }
+    else
+    {
+        sigma_.clear();
+        TL_.clear();
+        gradSigma_.clear();
+    }
+}
+
+
+template<class CloudType>
+Foam::vector Foam::LangevinDispersionRAS<CloudType>::update
+(
+    const scalar dt,
+    const label celli,
+    const vector& U,
+    const vector& Uc,
+    vector& UTurb,
+    scalar& tTurb
+)
+{
+    if (!sigma_.valid())
+    {
+        cache();
+    }
+    const scalar sigma = sigma_()[celli];
+    const scalar TL = TL_()[celli];
+    if (!(sigma > 0) || !(TL > 0))
+    {
+        // no turbulence here: the mean carrier, and a fresh draw where
+        // there is turbulence again
+        UTurb = Zero;
+        tTurb = 0;
+        return Uc;
+    }
+
+    // the normalised fluctuation: carried, or drawn from its stationary
+    // distribution (a new parcel, or one from a cell without turbulence)
+    const vector chi0 = tTurb > 0 ? UTurb/tTurb : normalVector();
+    if (!(dt > 0))
+    {
+        UTurb = sigma*chi0;
+        tTurb = sigma;
+        return Uc + UTurb;
+    }
+
+    const scalar slip = mag(U - Uc - sigma*chi0);
+    const scalar T = riser::crossingTrajectoryTime(TL, beta_, slip, sigma);
+    const vector xi1 = normalVector();
+    const vector xi2 = normalVector();
+    const riser::LangevinStep step = riser::langevinStep
+    (
+        toCore(chi0), toCore(gradSigma_()[celli]), T, dt, toCore(xi1), toCore(xi2)
+    );
+    UTurb = sigma*fromCore(step.chiEnd);
+    tTurb = sigma;
+    return Uc + sigma*fromCore(step.chiMean);
+}
+
+
+// ************************************************************************* //
