@@ -90,6 +90,10 @@ Usage
         bulkVelocity    0.5;    // target bulk velocity [m/s], [0, 100],
                                 // default uCentre/2
         relaxation      1;      // (0, 1], default 1
+        // optional, both or neither: a pulsation U_p sin(2 pi f_p t) of
+        // the target (the Womersley flow of a pulsating pump)
+        pulseAmplitude  0.1;    // U_p [m/s], (0, 100]
+        pulseFrequency  1;      // f_p [Hz], (0, 1e3]
     }
     \endverbatim
 

@@ -7,6 +7,9 @@
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
 #include "fvMatrices.H"
+#include "mathematicalConstants.H"
+
+#include <cmath>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -63,6 +66,17 @@ Foam::riserDrive::riserDrive
     (
         checkedEntry::inRange(driveDict, "relaxation", 0, false, 1, true, 1)
     ),
+    pulseAmplitude_
+    (
+        checkedEntry::inRange
+        (
+            driveDict, "pulseAmplitude", 0, true, maxBulkVelocity, true, 0
+        )
+    ),
+    pulseFrequency_
+    (
+        checkedEntry::inRange(driveDict, "pulseFrequency", 0, false, 1e3, true, 0)
+    ),
     dpdz_
     (
         IOobject
@@ -78,10 +92,31 @@ Foam::riserDrive::riserDrive
     ),
     lastBulk_(0)
 {
-    checkedEntry::allowedKeys(driveDict, {"bulkVelocity", "relaxation"});
+    checkedEntry::allowedKeys
+    (
+        driveDict,
+        {"bulkVelocity", "relaxation", "pulseAmplitude", "pulseFrequency"}
+    );
+    if ((pulseAmplitude_ > 0) != (pulseFrequency_ > 0))
+    {
+        FatalIOErrorInFunction(driveDict)
+            << "entry '"
+            << (pulseAmplitude_ > 0 ? "pulseAmplitude" : "pulseFrequency")
+            << "' without '"
+            << (pulseAmplitude_ > 0 ? "pulseFrequency" : "pulseAmplitude")
+            << "': a pulsation needs both, pulseAmplitude in (0, "
+            << maxBulkVelocity << "] m/s and pulseFrequency in (0, 1e3] Hz"
+            << nl << exit(FatalIOError);
+    }
 
     Info<< "Riser drive: bulk velocity " << target_ << " m/s"
         << (driveDict.found("bulkVelocity") ? "" : " (uCentre/2)")
+        << (
+                pulseAmplitude_ > 0
+              ? " + " + Foam::name(pulseAmplitude_) + " sin(2 pi "
+              + Foam::name(pulseFrequency_) + " t)"
+              : std::string()
+           )
         << ", relaxation " << relaxation_ << ", dp/dz = " << dpdz_.value()
         << " Pa/m at the start" << endl;
 
@@ -100,7 +135,14 @@ Foam::riserDrive::riserDrive
             file,
             sources,
             "# riserDrive: the uniform pressure gradient driving the carrier"
-            " at the bulk velocity " + std::string(Foam::name(target_)) + " m/s\n"
+            " at the bulk velocity " + std::string(Foam::name(target_))
+          + (
+                pulseAmplitude_ > 0
+              ? " + " + std::string(Foam::name(pulseAmplitude_)) + " sin(2 pi "
+              + std::string(Foam::name(pulseFrequency_)) + " t)"
+              : std::string()
+            )
+          + " m/s\n"
             "# t [s], dpdz [Pa/m], Ub [m/s] (before the step's last"
             " adjustment)\n"
             "# t dpdz Ub\n",
@@ -183,6 +225,17 @@ Foam::tmp<Foam::scalarField> Foam::riserDrive::response
 }
 
 
+Foam::scalar Foam::riserDrive::target() const
+{
+    if (pulseAmplitude_ == 0)
+    {
+        return target_;
+    }
+    const scalar t = mesh_.time().value();
+    return target_ + pulseAmplitude_*std::sin(constant::mathematical::twoPi*pulseFrequency_*t);
+}
+
+
 void Foam::riserDrive::correct
 (
     const volScalarField& alphac,
@@ -205,7 +258,7 @@ void Foam::riserDrive::correct
     reduce(volume, sumOp<scalar>());
 
     // the acceleration that moves the bulk velocity to the target
-    const scalar dG = relaxation_*(target_ - lastBulk_)*volume/gain;
+    const scalar dG = relaxation_*(target() - lastBulk_)*volume/gain;
 
     vectorField& Ui = U.primitiveFieldRef();
     forAll(Ui, celli)
@@ -221,7 +274,7 @@ void Foam::riserDrive::correct
 void Foam::riserDrive::writeRow()
 {
     Info<< "Riser drive: dp/dz = " << dpdz_.value() << " Pa/m, bulk velocity "
-        << lastBulk_ << " m/s (target " << target_ << ")" << endl;
+        << lastBulk_ << " m/s (target " << target() << ")" << endl;
     if (table_.valid())
     {
         table_() << mesh_.time().value() << ' ' << dpdz_.value() << ' '

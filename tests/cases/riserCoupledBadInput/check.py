@@ -5,7 +5,8 @@ riserCoupledFoam requires, and a kernel out of its range; a turbulence
 model whose field is missing from the start time, refused naming the
 model's entry and the field's file, and a misspelt simulationType,
 refused by OpenFOAM naming the entry and the allowed types; the explicit
-source scheme for U; a drag with a voidage function in a one-way run); a
+source scheme for U; a drive's pulsation without its amplitude or its
+frequency, or out of range; a drag with a voidage function in a one-way run); a
 cloud that is not coupled runs one-way and says so."""
 import os
 import shutil
@@ -81,6 +82,14 @@ expect("bulkVelocity < 0", "entry 'bulkVelocity' = -1 is outside the allowed ran
 expect("relaxation 0", "entry 'relaxation' = 0 is outside the allowed range (0, 1]",
        riser("drive { relaxation 0; }"))
 expect("an unknown drive entry", "unknown entry 'bulk'", riser("drive { bulk 1; }"))
+expect("pulseAmplitude without pulseFrequency",
+       "entry 'pulseAmplitude' without 'pulseFrequency'", riser("drive { pulseAmplitude 0.1; }"))
+expect("pulseFrequency without pulseAmplitude",
+       "entry 'pulseFrequency' without 'pulseAmplitude'", riser("drive { pulseFrequency 1; }"))
+expect("pulseFrequency 0", "entry 'pulseFrequency' = 0 is outside the allowed range (0, 1000]",
+       riser("drive { pulseAmplitude 0.1; pulseFrequency 0; }"))
+expect("pulseAmplitude < 0", "entry 'pulseAmplitude' = -0.1 is outside the allowed range [0, 100]",
+       riser("drive { pulseAmplitude -0.1; pulseFrequency 1; }"))
 expect("alphaMax 0.8", "entry 'alphaMax' = 0.8 is outside the allowed range (0, 0.74]",
        cloud(r"alphaMax 0.6;", "alphaMax 0.8;"))
 expect("no alphaMax", "alphaMax", cloud(r"alphaMax 0.6;", ""))
