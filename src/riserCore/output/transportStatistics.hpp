@@ -9,14 +9,15 @@
 //   t                       time
 //   parcels particles       parcels in the section, particles they stand for
 //   Cv                      in-situ solids volume fraction,
-//                           sum n_p V_p / (pi D^2/4 L)
+//                           sum n_p V_p / V, V the section's volume
+//                           (the mesh's, riserSection.H)
 //   Urx Ury Urz             mean particle velocity relative to the riser
 //                           (weighted by n_p)
 //   slipx slipy slipz       mean slip v_p - u(x_p) against the carrier at
 //                           each particle (weighted by n_p)
 //   liftingEfficiency       Urz / u_cm (nan without carrier flow, u_cm = 0)
 //   massFlux                solids mass flux through the section,
-//                           sum n_p m_p v_z,rel / L / (pi D^2/4) [kg/m^2/s]
+//                           sum n_p m_p v_z,rel / V [kg/m^2/s]
 //   contacts                wall contacts completed since the previous sample
 //   contactRate             contacts / (t - t_previous) / parcels [1/s]
 //   impacts                 of these, the ones whose impact speed is known

@@ -8,10 +8,9 @@
 #include "particleStateExchange.H"
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
-#include "boundBox.H"
+#include "riserSection.H"
 #include "coreVector.H"
 #include "output/transportStatistics.hpp"
-#include "mathematicalConstants.H"
 
 #include <limits>
 
@@ -249,7 +248,6 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     const scalar t = cloud.time().value();
     const riser::RiserFlow& flow = carrier_.riser();
     const scalar R = flow.radius();
-    const scalar area = constant::mathematical::pi*R*R;
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
 
     scalar parcels = 0, particles = 0, volume = 0, axialMomentum = 0;
@@ -290,12 +288,12 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         row.t = t;
         row.parcels = parcels;
         row.particles = particles;
-        row.Cv = volume/(area*length_);
+        row.Cv = volume/volume_;
         row.URel = particles > 0 ? toCore(URel/particles) : toCore(vector::one*nan);
         row.slip = particles > 0 ? toCore(slip/particles) : toCore(vector::one*nan);
         row.liftingEfficiency =
             flow.centreLineSpeed() > 0 ? row.URel.z()/flow.centreLineSpeed() : nan;
-        row.massFlux = axialMomentum/length_/area;
+        row.massFlux = axialMomentum/volume_;
         const scalar interval = t - lastSample_;
         row.contacts = wall_.contacts;
         row.contactRate =
@@ -326,8 +324,8 @@ void Foam::RiserTransportStatistics<CloudType>::sample
             riser::writeStatisticsRow(os, row);
             os.flush();
         };
-        writeProfile(radialFile_(), radialVolume/(area*length_/radialBins_));
-        writeProfile(axialFile_(), axialVolume/(area*length_/axialBins_));
+        writeProfile(radialFile_(), radialVolume/(volume_/radialBins_));
+        writeProfile(axialFile_(), axialVolume/(volume_/axialBins_));
         writeProfile(impactFile_(), wall_.histogram);
         writeProfile(pairImpactFile_(), pair_.histogram);
         transportFile_().flush();
@@ -375,8 +373,9 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
             this->coeffDict(), "impactSpeedBinWidth", 0, false, 100, true, 0.1
         )
     ),
-    z0_(boundBox(owner.mesh().points()).min().z()),
-    length_(boundBox(owner.mesh().points()).span().z()),
+    z0_(riserSection(owner.mesh()).z0),
+    length_(riserSection(owner.mesh()).length),
+    volume_(riserSection(owner.mesh()).volume),
     lastSample_(owner.time().startTime().value())
 {
     wall_.histogram.setSize(impactSpeedBins_, Zero);
@@ -439,6 +438,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     impactSpeedBinWidth_(s.impactSpeedBinWidth_),
     z0_(s.z0_),
     length_(s.length_),
+    volume_(s.volume_),
     traces_(s.traces_),
     started_(s.started_),
     lastSample_(s.lastSample_),
@@ -480,9 +480,7 @@ void Foam::RiserTransportStatistics<CloudType>::postEvolve
     countContacts();
 
     const scalarList volume = axialVolumes();
-    const scalar sliceVolume =
-        constant::mathematical::pi*sqr(carrier_.riser().radius())
-       *length_/axialBins_;
+    const scalar sliceVolume = volume_/axialBins_;
     label blockedBins = 0;
     for (const scalar V : volume)
     {

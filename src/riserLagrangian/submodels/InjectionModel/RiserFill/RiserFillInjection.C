@@ -28,7 +28,7 @@ void Foam::RiserFillInjection<CloudType>::fill()
     const riserSectionExtent section = riserSection(mesh);
     const scalar L = section.length;
     const bool periodic = section.periodic;
-    const scalar V = 0.25*pi*D*D*L;
+    const scalar V = section.volume;
 
     // the ends of a closed section are walls; a periodic one must not let
     // an ore reach two images of another
