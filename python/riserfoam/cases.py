@@ -632,6 +632,19 @@ def fill_injection(cv, d=None, seed=1, sizes=None):
         }""" % (cv, seed, sizes)
 
 
+def single_release(d, velocity=(0.0, 0.0, 0.0)):
+    """The injector 'release' of a coupled_pipe_case, as text: one particle
+    of diameter d at each position of constant/kinematicCloudPositions, at
+    the start, with the velocity velocity"""
+    return """
+        release
+        {
+            type manualInjection; massTotal 0; parcelBasisType fixed; nParticle 1;
+            SOI 0; positionsFile "kinematicCloudPositions"; U0 (%r %r %r);
+            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
+        }""" % (tuple(velocity) + (d,))
+
+
 def solve_coupled(case):
     """riserCoupledFoam on the case, then its cell volumes V at the latest
     time"""

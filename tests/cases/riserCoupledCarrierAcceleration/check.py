@@ -74,16 +74,6 @@ FORCES = """        wallCorrectedDrag { law continuous; }
 %s        gravity;"""
 
 
-def release(position, velocity, d):
-    return """
-        release
-        {
-            type manualInjection; massTotal 0; parcelBasisType fixed; nParticle 1;
-            SOI 0; positionsFile "kinematicCloudPositions"; U0 (%r %r %r);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % (tuple(velocity) + (d,))
-
-
 def make(name, frame, rho_p, d, uCentre, position, u_axial, periods, collision=None,
          coupled=False, kernel="type none;", nz=2, steps=STEPS, amplitude=A):
     case = os.path.abspath(name)
@@ -92,7 +82,7 @@ def make(name, frame, rho_p, d, uCentre, position, u_axial, periods, collision=N
         case, 8, nz, L=L, D=D, nu=NU, rho=RHO, uCentre=uCentre, A=amplitude, f=F,
         frame=frame,
         dt=T / steps, end=periods * T, U0="poiseuille",
-        injection=release(position, (amplitude * OMEGA if lab else 0.0, 0.0, u_axial), d),
+        injection=cases.single_release(d, (amplitude * OMEGA if lab else 0.0, 0.0, u_axial)),
         forces=FORCES % ("" if lab else "        riserFrame;\n"),
         collision=collision, coupled=coupled, kernel=kernel, cloud_functions="table { type riserParticleTable; }")
     foamfields.edit(os.path.join(case, "constant/kinematicCloudProperties"),

@@ -67,13 +67,7 @@ D, L, RHO, RHO_P, G, d = 0.1, 0.2, 1000.0, 2000.0, 9.81, 0.01
 A, F, UCM = 0.1, 3.0, 1.0
 DT, END = 5e-4, 1 / 3.0
 WIDTHS = (3, 6)
-RELEASE = """
-        release
-        {
-            type manualInjection; massTotal 0; parcelBasisType fixed; nParticle 1;
-            SOI 0; positionsFile "kinematicCloudPositions"; U0 (0 0 0.68);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % d
+RELEASE = cases.single_release(d, (0.0, 0.0, 0.68))
 
 
 def riser(name, coupled, width):

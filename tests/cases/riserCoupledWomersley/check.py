@@ -76,13 +76,7 @@ FORCES = """        wallCorrectedDrag { law continuous; }
         riserAddedMass { CA 0.5; }
 %s        gravity;"""
 
-RELEASE = """
-        release
-        {
-            type manualInjection; massTotal 0; parcelBasisType fixed; nParticle 1;
-            SOI 0; positionsFile "kinematicCloudPositions"; U0 (0 0 0);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value %r; } }
-        }""" % DP
+RELEASE = cases.single_release(DP)
 
 
 def make(name, fluid_stress):
