@@ -111,12 +111,7 @@ Foam::riserDrive::riserDrive
 
     Info<< "Riser drive: bulk velocity " << target_ << " m/s"
         << (driveDict.found("bulkVelocity") ? "" : " (uCentre/2)")
-        << (
-                pulseAmplitude_ > 0
-              ? " + " + Foam::name(pulseAmplitude_) + " sin(2 pi "
-              + Foam::name(pulseFrequency_) + " t)"
-              : std::string()
-           )
+        << pulseText()
         << ", relaxation " << relaxation_ << ", dp/dz = " << dpdz_.value()
         << " Pa/m at the start" << endl;
 
@@ -136,13 +131,7 @@ Foam::riserDrive::riserDrive
             sources,
             "# riserDrive: the uniform pressure gradient driving the carrier"
             " at the bulk velocity " + std::string(Foam::name(target_))
-          + (
-                pulseAmplitude_ > 0
-              ? " + " + std::string(Foam::name(pulseAmplitude_)) + " sin(2 pi "
-              + std::string(Foam::name(pulseFrequency_)) + " t)"
-              : std::string()
-            )
-          + " m/s\n"
+          + pulseText() + " m/s\n"
             "# t [s], dpdz [Pa/m], Ub [m/s] (before the step's last"
             " adjustment)\n"
             "# t dpdz Ub\n",
@@ -222,6 +211,18 @@ Foam::tmp<Foam::scalarField> Foam::riserDrive::response
         solverControls
     )->solve(ts.ref(), source, vector::Z);
     return ts;
+}
+
+
+std::string Foam::riserDrive::pulseText() const
+{
+    if (pulseAmplitude_ == 0)
+    {
+        return std::string();
+    }
+    return
+        " + " + std::string(Foam::name(pulseAmplitude_)) + " sin(2 pi "
+      + std::string(Foam::name(pulseFrequency_)) + " t)";
 }
 
 

@@ -81,21 +81,19 @@ void Foam::LangevinDispersionRAS<CloudType>::cache()
     }
 
     const tmp<volScalarField> tk(turbulence->k());
-    const tmp<volScalarField> tnut(turbulence->nut());
     sigma_.reset
-    (
-        new volScalarField("langevinSigma", sqrt(2.0/3.0*max(tk(), dimensionedScalar("zero", tk().dimensions(), 0))))
-    );
-    gradSigma_.reset(new volVectorField("langevinGradSigma", fvc::grad(sigma_())));
-    const volScalarField& sigma = sigma_();
-    TL_.reset
     (
         new volScalarField
         (
-            "langevinTL",
-            tnut()/(Sct_*sqr(sigma) + dimensionedScalar("tiny", sqr(sigma.dimensions()), ROOTVSMALL))
+            "langevinSigma",
+            sqrt(2.0/3.0*max(tk(), dimensionedScalar("zero", tk().dimensions(), 0)))
         )
     );
+    gradSigma_.reset
+    (
+        new volVectorField("langevinGradSigma", fvc::grad(sigma_()))
+    );
+    nut_.reset(new volScalarField("langevinNut", turbulence->nut()));
 }
 
 
@@ -122,8 +120,8 @@ void Foam::LangevinDispersionRAS<CloudType>::cacheFields(const bool store)
     else
     {
         sigma_.clear();
-        TL_.clear();
         gradSigma_.clear();
+        nut_.clear();
     }
 }
 
@@ -144,8 +142,8 @@ Foam::vector Foam::LangevinDispersionRAS<CloudType>::update
         cache();
     }
     const scalar sigma = sigma_()[celli];
-    const scalar TL = TL_()[celli];
-    if (!(sigma > 0) || !(TL > 0))
+    const scalar nut = nut_()[celli];
+    if (!(sigma > 0) || !(nut > 0))
     {
         // no turbulence here: the mean carrier, and a fresh draw where
         // there is turbulence again
@@ -165,7 +163,10 @@ Foam::vector Foam::LangevinDispersionRAS<CloudType>::update
     }
 
     const scalar slip = mag(U - Uc - sigma*chi0);
-    const scalar T = riser::crossingTrajectoryTime(TL, beta_, slip, sigma);
+    const scalar T = riser::crossingTrajectoryTime
+    (
+        riser::lagrangianTime(nut, Sct_, sigma), beta_, slip, sigma
+    );
     const vector xi1 = normalVector();
     const vector xi2 = normalVector();
     const riser::LangevinStep step = riser::langevinStep
