@@ -8,7 +8,6 @@
 #include "particleStateExchange.H"
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
-#include "riserSection.H"
 #include "coreVector.H"
 #include "output/transportStatistics.hpp"
 
@@ -84,7 +83,7 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
         );
     };
     std::ostringstream z0, width;
-    z0 << z0_;
+    z0 << section_.z0;
     width << impactSpeedBinWidth_;
     transportFile_ = open
     (
@@ -213,7 +212,7 @@ Foam::RiserTransportStatistics<CloudType>::axialVolumes()
     {
         const endOfStep<typename CloudType::parcelType> done(p);
         const label bin =
-            riser::axialBin(p.position().z(), z0_, length_, axialBins_);
+            riser::axialBin(p.position().z(), section_.z0, section_.length, axialBins_);
         volume[bin] += p.nParticle()*p.volume();
     }
     Pstream::listCombineGather(volume, plusEqOp<scalar>());
@@ -288,12 +287,12 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         row.t = t;
         row.parcels = parcels;
         row.particles = particles;
-        row.Cv = volume/volume_;
+        row.Cv = volume/section_.volume;
         row.URel = particles > 0 ? toCore(URel/particles) : toCore(vector::one*nan);
         row.slip = particles > 0 ? toCore(slip/particles) : toCore(vector::one*nan);
         row.liftingEfficiency =
             flow.centreLineSpeed() > 0 ? row.URel.z()/flow.centreLineSpeed() : nan;
-        row.massFlux = axialMomentum/volume_;
+        row.massFlux = axialMomentum/section_.volume;
         const scalar interval = t - lastSample_;
         row.contacts = wall_.contacts;
         row.contactRate =
@@ -324,8 +323,8 @@ void Foam::RiserTransportStatistics<CloudType>::sample
             riser::writeStatisticsRow(os, row);
             os.flush();
         };
-        writeProfile(radialFile_(), radialVolume/(volume_/radialBins_));
-        writeProfile(axialFile_(), axialVolume/(volume_/axialBins_));
+        writeProfile(radialFile_(), radialVolume/(section_.volume/radialBins_));
+        writeProfile(axialFile_(), axialVolume/(section_.volume/axialBins_));
         writeProfile(impactFile_(), wall_.histogram);
         writeProfile(pairImpactFile_(), pair_.histogram);
         transportFile_().flush();
@@ -373,9 +372,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
             this->coeffDict(), "impactSpeedBinWidth", 0, false, 100, true, 0.1
         )
     ),
-    z0_(riserSection(owner.mesh()).z0),
-    length_(riserSection(owner.mesh()).length),
-    volume_(riserSection(owner.mesh()).volume),
+    section_(riserSection(owner.mesh())),
     lastSample_(owner.time().startTime().value())
 {
     wall_.histogram.setSize(impactSpeedBins_, Zero);
@@ -436,9 +433,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     blockageFraction_(s.blockageFraction_),
     impactSpeedBins_(s.impactSpeedBins_),
     impactSpeedBinWidth_(s.impactSpeedBinWidth_),
-    z0_(s.z0_),
-    length_(s.length_),
-    volume_(s.volume_),
+    section_(s.section_),
     traces_(s.traces_),
     started_(s.started_),
     lastSample_(s.lastSample_),
@@ -480,7 +475,7 @@ void Foam::RiserTransportStatistics<CloudType>::postEvolve
     countContacts();
 
     const scalarList volume = axialVolumes();
-    const scalar sliceVolume = volume_/axialBins_;
+    const scalar sliceVolume = section_.volume/axialBins_;
     label blockedBins = 0;
     for (const scalar V : volume)
     {
