@@ -76,7 +76,7 @@ Description
 Usage
     riserCoupledFoam [-cloud name]
 
-    constant/riserProperties (carrierFlow; carrier interpolated, the
+    constant/riserProperties (riserModel; carrier interpolated, the
     default, is the only value allowed here):
     \verbatim
     D           0.1;            // riser diameter [m], (0, 10]
@@ -161,7 +161,6 @@ Usage
 #include "basicRiserCloud.H"
 #include "carrierFlow.H"
 #include "riserDrive.H"
-#include "riserSection.H"
 #include "modelEntries.H"
 #include "coreVector.H"
 #include "particleCoupling.H"
@@ -193,16 +192,16 @@ int main(int argc, char *argv[])
 
     // The riser's acceleration, which the pressure takes: p is the
     // pressure less its part -a_r.x (and less the hydrostatic part). In
-    // the riser frame a_r is the frame's (carrierFlow); in the lab frame
+    // the riser frame a_r is the frame's (riserModel); in the lab frame
     // the change of the moving mesh's velocity over the step,
     // (x_c(t) - 2 x_c(t - dt) + x_c(t - 2 dt))/dt^2, so that the carrier
     // keeps the wall's discrete velocity
     dimensionedVector aRiser("aRiser", dimAcceleration, Zero);
     const bool riserFrame =
-        carrier.frame() == carrierFlow::simulationFrame::riser;
+        theRiser.frame() == riserModel::simulationFrame::riser;
     auto riserAcceleration = [&]()
     {
-        const riser::RiserMotion& motion = carrier.riserMotion();
+        const riser::RiserMotion& motion = theRiser.motion();
         const scalar t = runTime.value();
         if (motion.maxSpeed() == 0)
         {
@@ -210,7 +209,7 @@ int main(int argc, char *argv[])
         }
         if (riserFrame)
         {
-            return carrier.frameAcceleration(t);
+            return theRiser.frameAcceleration(t);
         }
         const scalar dt = runTime.deltaTValue();
         return vector

@@ -22,7 +22,7 @@ Description
     interpolated carrier), then evolve the cloud, so that stock cloud
     functions and function objects work.
 
-    constant/riserProperties (see carrierFlow) sets the riser, the carrier
+    constant/riserProperties (riserModel, carrierFlow) sets the riser, the carrier
     evaluation (exact or interpolated) and the frame (lab: moving mesh and
     wall; riser: static mesh, Poiseuille carrier and the frame force).
 

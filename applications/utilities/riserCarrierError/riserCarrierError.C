@@ -67,7 +67,7 @@ int main(int argc, char *argv[])
         dimensionedVector(dimVelocity, Zero)
     );
     carrierFlow carrier(U, true);
-    const riser::RiserFlow& flow = carrier.riser();
+    const riser::RiserFlow& flow = riserModel::New(mesh).flow();
     const riser::RiserMotion& motion = flow.motion();
     const scalar R = flow.radius();
     const scalar period =

@@ -5,6 +5,7 @@
 
 #include "riserParticleJobs.H"
 #include "OFstream.H"
+#include "mathematicalConstants.H"
 
 #include <atomic>
 #include <chrono>
@@ -174,13 +175,13 @@ void Foam::runSweep
     using namespace checkedEntry;
     const IOdictionary dict(readCaseDict(runTime, "riserSweepDict", runTime.system()));
     allowedKeys(dict, {"A", "f", "periods", "liftTime"});
-    const List<scalar> As = readSweepList(dict, "A", true, carrierFlow::maxAmplitude);
-    const List<scalar> fs = readSweepList(dict, "f", false, carrierFlow::maxFrequency);
+    const List<scalar> As = readSweepList(dict, "A", true, riserModel::maxAmplitude);
+    const List<scalar> fs = readSweepList(dict, "f", false, riserModel::maxFrequency);
     for (const scalar A : As)
     {
         for (const scalar f : fs)
         {
-            carrierFlow::checkWallMotion(dict, A, f);
+            riserModel::checkWallMotion(dict, A, f);
         }
     }
     const label periods = count(dict, "periods", 1, 10000);

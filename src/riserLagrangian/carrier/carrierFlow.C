@@ -9,8 +9,6 @@
 #include "fvcDdt.H"
 #include "fvcGrad.H"
 #include "fvMesh.H"
-#include "IOdictionary.H"
-#include "unitConversion.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -51,75 +49,31 @@ Foam::carrierFlow::carrierFlow
     ),
     mesh_(U.mesh()),
     U_(U),
-    evaluation_(evaluation::interpolated),
-    frame_(simulationFrame::lab),
-    flowSteady_(false)
+    riser_(riserModel::New(U.mesh())),
+    evaluation_(evaluation::interpolated)
 {
-    IOobject io
-    (
-        "riserProperties",
-        mesh_.time().constant(),
-        mesh_,
-        IOobject::MUST_READ,
-        IOobject::NO_WRITE,
-        false
-    );
-
-    if (io.typeHeaderOk<IOdictionary>(true))
+    if (riser_.exactCarrier() && !forceInterpolated)
     {
-        const IOdictionary dict(io);
-        motion_.reset(new riser::RiserFlow(readRiser(dict)));
-        frame_ = dict.found("frame")
-          ? checkedEntry::choice<simulationFrame>
-            (
-                dict, "frame",
-                {{"lab", simulationFrame::lab}, {"riser", simulationFrame::riser}}
-            )
-          : simulationFrame::lab;
-        riser_.reset
-        (
-            frame_ == simulationFrame::lab
-          ? new riser::RiserFlow(*motion_)
-          : new riser::RiserFlow
-            (
-                motion_->diameter(), motion_->centreLineSpeed(), riser::RiserMotion::atRest()
-            )
-        );
-        flowSteady_ = riser_->motion().omega() == 0;
-        if (flowSteady_)
-        {
-            lastMotion_.flow = riser_->motion().state(0);
-        }
-        if (dict.found("carrier"))
-        {
-            evaluation_ = checkedEntry::choice<evaluation>
-            (
-                dict, "carrier",
-                {{"exact", evaluation::exact},
-                 {"interpolated", evaluation::interpolated}}
-            );
-        }
-
         // a computed flow is the mesh's: the analytic one would replace it
         const dictionary& solvers =
             static_cast<const fvSolution&>(mesh_).subOrEmptyDict("solvers");
-        if (exact() && !forceInterpolated && solvers.found(U_.name()))
+        if (solvers.found(U_.name()))
         {
-            FatalIOErrorInFunction(dict)
+            FatalIOErrorInFunction(riser_.dict())
                 << "entry 'carrier' = exact, but system/fvSolution has a solver"
                 << " for the carrier " << U_.name() << ": a computed flow must be"
                 << " interpolated (set carrier interpolated)"
                 << exit(FatalIOError);
         }
-    }
-    if (forceInterpolated)
-    {
-        evaluation_ = evaluation::interpolated;
+        evaluation_ = evaluation::exact;
     }
 
     Info<< "Carrier flow of " << U_.name() << ": "
         << (exact() ? "exact (analytic riser)" : "interpolated")
-        << (frame_ == simulationFrame::riser ? ", riser frame" : "")
+        << (
+               riser_.frame() == riserModel::simulationFrame::riser
+             ? ", riser frame" : ""
+           )
         << endl;
 }
 
@@ -139,93 +93,7 @@ Foam::carrierFlow& Foam::carrierFlow::New(const volVectorField& U)
 }
 
 
-const Foam::scalar Foam::carrierFlow::maxDiameter = 10;
-const Foam::scalar Foam::carrierFlow::maxSpeed = 100;
-const Foam::scalar Foam::carrierFlow::maxAmplitude = 10;
-const Foam::scalar Foam::carrierFlow::maxFrequency = 1000;
-const Foam::scalar Foam::carrierFlow::maxAcceleration = 1e4;
-
-
-void Foam::carrierFlow::checkWallMotion
-(
-    const dictionary& dict,
-    const scalar A,
-    const scalar f
-)
-{
-    const scalar omega = constant::mathematical::twoPi*f;
-    if (A*omega > maxSpeed || A*omega*omega > maxAcceleration)
-    {
-        FatalIOErrorInFunction(dict)
-            << "entries 'A' = " << A << " m and 'f' = " << f << " Hz (omega = "
-            << omega << " rad/s) give the wall a speed A omega = " << A*omega
-            << " m/s and an acceleration A omega^2 = " << A*omega*omega
-            << " m/s^2; a riser's are at most " << maxSpeed << " m/s and "
-            << maxAcceleration << " m/s^2" << nl << exit(FatalIOError);
-    }
-}
-
-
-riser::RiserFlow Foam::carrierFlow::readRiser(const dictionary& dict)
-{
-    using checkedEntry::dimensionedInRange;
-    using constant::mathematical::twoPi;
-
-    checkedEntry::allowedKeys
-    (
-        dict,
-        {"D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier", "drive"}
-    );
-    const scalar D =
-        dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
-    const scalar uCentre =
-        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, maxSpeed, true);
-    const scalar A =
-        dimensionedInRange(dict, "A", dimLength, 0, true, maxAmplitude, true);
-
-    const bool hasF = dict.found("f"), hasOmega = dict.found("omega");
-    if (hasF == hasOmega)
-    {
-        FatalIOErrorInFunction(dict)
-            << "give exactly one of the entries 'f' [Hz] and 'omega' [rad/s]"
-            << exit(FatalIOError);
-    }
-    const scalar omega = hasF
-      ? twoPi
-       *dimensionedInRange(dict, "f", dimless/dimTime, 0, true, maxFrequency, true)
-      : dimensionedInRange
-        (
-            dict, "omega", dimless/dimTime, 0, true, twoPi*maxFrequency, true
-        );
-    checkWallMotion(dict, A, omega/twoPi);
-
-    const scalar phi0 =
-        checkedEntry::inRange(dict, "phi0", -twoPi, true, twoPi, true, 0);
-
-    return riser::RiserFlow(D, uCentre, A, omega, phi0);
-}
-
-
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
-
-const riser::RiserFlow& Foam::carrierFlow::riser() const
-{
-    if (!riser_)
-    {
-        FatalErrorInFunction
-            << "no analytic riser: constant/riserProperties is missing"
-            << exit(FatalError);
-    }
-    return *riser_;
-}
-
-
-const riser::RiserMotion& Foam::carrierFlow::riserMotion() const
-{
-    riser();
-    return motion_->motion();
-}
-
 
 Foam::tmp<Foam::volVectorField> Foam::carrierFlow::buildVorticity() const
 {

@@ -6,56 +6,12 @@
 #include "carrierFlow.H"
 #include "coreVector.H"
 
-#include <type_traits>
-#include <utility>
-
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-namespace Foam
-{
-namespace carrierFlowDetail
-{
-    //- Are the cloud's particles colliding parcels (with collision
-    //  records: a colliding cloud)? (The models are made for the cloud's
-    //  kinematic layer, which has no collision model of its own to ask.)
-    template<class CloudType, class = void>
-    struct collides : std::false_type {};
-
-    template<class CloudType>
-    struct collides
-    <
-        CloudType,
-        std::void_t
-        <
-            decltype(std::declval<typename CloudType::parcelType&>().collisionRecords())
-        >
-    >
-    :
-        std::true_type {};
-}
-}
-
 
 template<class CloudType>
 Foam::carrierFlow& Foam::carrierFlow::ofCloud(const CloudType& cloud)
 {
-    const dictionary& models = cloud.subModelProperties();
-    if (!carrierFlowDetail::collides<CloudType>::value && models.found("collisionModel"))
-    {
-        const word type(models.get<word>("collisionModel"));
-        if (type != "none")
-        {
-            FatalIOErrorInFunction(models)
-                << "entry 'collisionModel' = " << type << " in the cloud "
-                << cloud.name() << ", whose particles do not collide (a"
-                << " cloud without a collision model, as MPPICFoam's and"
-                << " uncoupledKinematicParcelFoam's): it would be ignored."
-                << " Remove it (the wall is then the patchInteractionModel's),"
-                << " or run a colliding cloud: riserParcelFoam,"
-                << " riserCoupledFoam, DPMFoam, icoUncoupledKinematicParcelFoam"
-                << exit(FatalIOError);
-        }
-    }
+    riserModel::ofCloud(cloud);
     return New(cloud.U());
 }
 
@@ -102,10 +58,10 @@ Foam::vector Foam::carrierFlow::velocity
     }
     return fromCore
     (
-        riser_->velocity
+        riser_.flow().velocity
         (
             toCore(position(p)),
-            motionAt(particleTime(p.stepFraction())).flow
+            riser_.at(riser_.particleTime(p.stepFraction())).flow
         )
     );
 }
@@ -120,10 +76,10 @@ Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
     }
     return fromCore
     (
-        riser_->vorticity
+        riser_.flow().vorticity
         (
             toCore(position(p)),
-            motionAt(particleTime(p.stepFraction())).flow
+            riser_.at(riser_.particleTime(p.stepFraction())).flow
         )
     );
 }
@@ -140,9 +96,9 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
     // (on a moving mesh position() costs two cell-centre evaluations)
     return fromCore
     (
-        riser_->materialDerivative
+        riser_.flow().materialDerivative
         (
-            motionAt(particleTime(p.stepFraction())).flow
+            riser_.at(riser_.particleTime(p.stepFraction())).flow
         )
     );
 }

@@ -121,7 +121,7 @@ Foam::RiserContact<CloudType>::RiserContact
 )
 :
     CollisionModel<CloudType>(dict, owner, type),
-    carrier_(carrierFlow::ofCloud(owner)),
+    riser_(riserModel::ofCloud(owner)),
     wallLaw_(readWallLaw()),
     rotation_(this->coeffDict().lookupOrDefault("rotation", Switch(false))),
     stepsPerContact_
@@ -141,7 +141,7 @@ Foam::RiserContact<CloudType>::RiserContact
         )
     ),
     addedMassCoeff_(readAddedMassCoeff()),
-    section_(riserSection(owner.mesh())),
+    section_(riser_.section()),
     cellAxisDistance_
     (
         owner.mesh().changing() ? scalarField() : cellAxisDistances(owner.mesh())
@@ -186,7 +186,7 @@ Foam::RiserContact<CloudType>::RiserContact
     }
 
     // the riser must exist: FatalError here rather than at the first step
-    carrier_.riser();
+    riser_.flow();
     // the coefficients under the model's other name (riserWallContact, its
     // old one) would be ignored
     const word other = (type == typeName ? word("riserWallContact") : typeName) + "Coeffs";
@@ -240,7 +240,7 @@ Foam::RiserContact<CloudType>::RiserContact
 :
     CollisionModel<CloudType>(cm),
     localSubCycling<parcelType>(cm),
-    carrier_(cm.carrier_),
+    riser_(cm.riser_),
     wallLaw_(cm.wallLaw_.valid() ? new riser::HertzMindlin(cm.wallLaw_()) : nullptr),
     rotation_(cm.rotation_),
     stepsPerContact_(cm.stepsPerContact_),
@@ -486,11 +486,11 @@ template<class CloudType>
 void Foam::RiserContact<CloudType>::collide()
 {
     const Time& time = this->owner().mesh().time();
-    const riser::Wall& wall = carrier_.wall();
+    const riser::Wall& wall = riser_.wall();
     const scalar t = time.value();
     const scalar dt = time.deltaTValue();
     checkMeshUnchanged();
-    const scalar axisOffset = mag(carrier_.riser().motion().axisPosition(t));
+    const scalar axisOffset = mag(riser_.flow().motion().axisPosition(t));
 
     for (parcelType& p : this->owner())
     {

@@ -208,7 +208,7 @@ Foam::RiserContact<CloudType>::meshFreeContacts
 )
 {
     const Time& time = this->owner().mesh().time();
-    const riser::Wall& wall = carrier_.wall();
+    const riser::Wall& wall = riser_.wall();
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
     const label me = Pstream::myProcNo();

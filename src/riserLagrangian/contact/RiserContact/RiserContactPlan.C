@@ -71,7 +71,7 @@ bool Foam::RiserContact<CloudType>::clearOfWall
     // the particle's distance from the axis is at most its cell's from the
     // z axis plus the axis' offset; the tolerance is far beyond the
     // round-off of the particle's coordinates in its tetrahedron
-    const riser::RiserFlow& flow = carrier_.riser();
+    const riser::RiserFlow& flow = riser_.flow();
     return
         cellAxisDistance_.size()
      && flow.radius() - (cellAxisDistance_[p.cell()] + axisOffset) - 0.5*p.d()
@@ -88,8 +88,8 @@ Foam::label Foam::RiserContact<CloudType>::nearWallSubCycles
 ) const
 {
     const Time& time = this->owner().mesh().time();
-    const riser::RiserFlow& flow = carrier_.riser();
-    const riser::Wall& wall = carrier_.wall();
+    const riser::RiserFlow& flow = riser_.flow();
+    const riser::Wall& wall = riser_.wall();
     const scalar dt = time.deltaTValue();
     const scalar t0 = time.value() - dt;
 
@@ -209,7 +209,7 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
     preparedIndex_ = time.timeIndex();
     checkMeshUnchanged();
     const scalar axisOffset =
-        mag(carrier_.riser().motion().axisPosition(time.value() - dt));
+        mag(riser_.flow().motion().axisPosition(time.value() - dt));
 
     // this processor's particles: key, wall need
     const label nOwn = this->owner().size();

@@ -4,7 +4,7 @@
 \*---------------------------------------------------------------------------*/
 
 #include "riserOscillation.H"
-#include "carrierFlow.H"
+#include "riserModel.H"
 #include "IOdictionary.H"
 #include "addToRunTimeSelectionTable.H"
 
@@ -71,7 +71,7 @@ bool Foam::solidBodyMotionFunctions::riserOscillation::read
             false
         )
     );
-    motion_.reset(new riser::RiserMotion(carrierFlow::readRiser(riserDict).motion()));
+    motion_.reset(new riser::RiserMotion(riserModel::read(riserDict).motion()));
     return true;
 }
 

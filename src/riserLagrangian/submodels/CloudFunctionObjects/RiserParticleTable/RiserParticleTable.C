@@ -8,7 +8,6 @@
 #include "checkedEntry.H"
 #include "cloudOutputFile.H"
 #include "particleStateExchange.H"
-#include "boundBox.H"
 #include "coreVector.H"
 #include "output/particleTable.hpp"
 #include "IOField.H"
@@ -106,12 +105,12 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
 )
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
-    carrier_(carrierFlow::ofCloud(owner)),
+    riser_(riserModel::New(owner.mesh())),
     interval_(checkedEntry::count(this->coeffDict(), "interval", 1, 1000000000, 1)),
-    length_(boundBox(owner.mesh().points()).span().z())
+    length_(riser_.section().length)
 {
     checkedEntry::allowedKeys(this->coeffDict(), {"type", "interval"});
-    carrier_.riser();
+    riser_.flow();   // FatalError now if there is no riser
     readOrigins();
 }
 
@@ -123,7 +122,7 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
 )
 :
     CloudFunctionObject<CloudType>(t),
-    carrier_(t.carrier_),
+    riser_(t.riser_),
     interval_(t.interval_),
     calls_(t.calls_),
     length_(t.length_),
@@ -261,9 +260,9 @@ void Foam::RiserParticleTable<CloudType>::postEvolve
     const Time& time = cloud.mesh().time();
     const scalar t = time.value();
     const scalar dt = time.deltaTValue();
-    const riser::RiserMotion& motion = carrier_.riserMotion();
-    const riser::Wall& wall = carrier_.wall();
-    const bool labFrame = carrier_.frame() == carrierFlow::simulationFrame::lab;
+    const riser::RiserMotion& motion = riser_.motion();
+    const riser::Wall& wall = riser_.wall();
+    const bool labFrame = riser_.frame() == riserModel::simulationFrame::lab;
 
     OFstream& os = file();
     cloud.forces().cacheFields(true);

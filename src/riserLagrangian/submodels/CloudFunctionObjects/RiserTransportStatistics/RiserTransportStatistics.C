@@ -245,7 +245,7 @@ void Foam::RiserTransportStatistics<CloudType>::sample
 {
     CloudType& cloud = this->owner();
     const scalar t = cloud.time().value();
-    const riser::RiserFlow& flow = carrier_.riser();
+    const riser::RiserFlow& flow = riser_.flow();
     const scalar R = flow.radius();
     const scalar nan = std::numeric_limits<scalar>::quiet_NaN();
 
@@ -348,6 +348,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
     carrier_(carrierFlow::ofCloud(owner)),
+    riser_(riserModel::New(owner.mesh())),
     interval_
     (
         checkedEntry::inRange(this->coeffDict(), "interval", 0, false, 1e9, true, 0)
@@ -372,7 +373,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
             this->coeffDict(), "impactSpeedBinWidth", 0, false, 100, true, 0.1
         )
     ),
-    section_(riserSection(owner.mesh())),
+    section_(riser_.section()),
     lastSample_(owner.time().startTime().value())
 {
     wall_.histogram.setSize(impactSpeedBins_, Zero);
@@ -385,7 +386,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
             "impactSpeedBins", "impactSpeedBinWidth"
         }
     );
-    carrier_.riser();
+    riser_.flow();
 
     // a restart: the interval in progress and the blocked time so far
     this->getModelProperty("lastSample", lastSample_);
@@ -427,6 +428,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
 :
     CloudFunctionObject<CloudType>(s),
     carrier_(s.carrier_),
+    riser_(s.riser_),
     interval_(s.interval_),
     radialBins_(s.radialBins_),
     axialBins_(s.axialBins_),

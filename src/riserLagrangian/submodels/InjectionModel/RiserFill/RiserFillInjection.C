@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "RiserFillInjection.H"
-#include "riserSection.H"
 #include "boundBox.H"
 #include "coreVector.H"
 #include "granular/nearPairs.hpp"
@@ -18,14 +17,13 @@ void Foam::RiserFillInjection<CloudType>::fill()
     using constant::mathematical::pi;
 
     const dictionary& dict = this->coeffDict();
-    const polyMesh& mesh = this->owner().mesh();
-    const scalar D = this->carrier_.riser().diameter();
+    const scalar D = this->riser_.flow().diameter();
     const scalar R = 0.5*D;
     const scalar Cv =
         checkedEntry::inRange(dict, "solidsFraction", 0, false, 0.5, true);
 
     // the section: the mesh's extent along the axis; periodic with cyclics
-    const riserSectionExtent section = riserSection(mesh);
+    const riserModel::sectionExtent& section = this->riser_.section();
     const scalar L = section.length;
     const bool periodic = section.periodic;
     const scalar V = section.volume;

@@ -5,7 +5,6 @@
 
 #include "RiserInletInjection.H"
 #include "cyclicPolyPatch.H"
-#include "boundBox.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -159,8 +158,8 @@ Foam::RiserInletInjection<CloudType>::RiserInletInjection
                 << exit(FatalIOError);
         }
     }
-    z0_ = boundBox(mesh.points(), true).min().z();
-    const scalar D = this->carrier_.riser().diameter();
+    z0_ = this->riser_.section().z0;
+    const scalar D = this->riser_.flow().diameter();
     this->source_->checkDiameters
     (
         this->coeffDict(),

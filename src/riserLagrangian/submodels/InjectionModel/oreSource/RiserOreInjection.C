@@ -18,12 +18,12 @@ Foam::RiserOreInjection<CloudType>::RiserOreInjection
 )
 :
     InjectionModel<CloudType>(dict, owner, modelName, modelType),
-    carrier_(carrierFlow::ofCloud(owner)),
+    riser_(riserModel::ofCloud(owner)),
     source_
     (
         std::make_shared<oreSource>
         (
-            this->coeffDict(), carrier_, owner.constProps().dict(), ownKeys,
+            this->coeffDict(), riser_, owner.constProps().dict(), ownKeys,
             this->parcelBasis_ == InjectionModel<CloudType>::pbFixed,
             this->nParticleFixed_
         )

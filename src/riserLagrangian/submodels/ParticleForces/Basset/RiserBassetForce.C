@@ -256,7 +256,7 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
     frequency_
     (
         coefficient_ == riser::BassetModel::michaelidesRoig
-      ? carrier_.riserMotion().frequency()
+      ? riserModel::New(mesh).motion().frequency()
       : 0
     ),
     kernel_(readKernel(this->coeffs(), mesh.time().deltaTValue())),

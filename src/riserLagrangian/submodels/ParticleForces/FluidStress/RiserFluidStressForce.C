@@ -21,7 +21,8 @@ Foam::RiserFluidStressForce<CloudType>::RiserFluidStressForce
 )
 :
     ParticleForce<CloudType>(owner, mesh, dict, forceType, readCoeffs),
-    carrier_(carrierFlow::ofCloud(owner))
+    carrier_(carrierFlow::ofCloud(owner)),
+    riser_(riserModel::New(mesh))
 {
     if (!readCoeffs)
     {
@@ -37,7 +38,8 @@ Foam::RiserFluidStressForce<CloudType>::RiserFluidStressForce
 )
 :
     ParticleForce<CloudType>(f),
-    carrier_(f.carrier_)
+    carrier_(f.carrier_),
+    riser_(f.riser_)
 {}
 
 
@@ -69,7 +71,7 @@ Foam::forceSuSp Foam::RiserFluidStressForce<CloudType>::calcCoupled
     // acceleration (the frame's acceleration added in the riser frame)
     const vector a =
         carrier_.materialDerivative(p)
-      + carrier_.frameAcceleration(carrier_.particleTime(p.stepFraction()));
+      + riser_.frameAcceleration(riser_.particleTime(p.stepFraction()));
     return forceSuSp
     (
         fromCore(riser::fluidStressForce(mass*td.rhoc()/p.rho(), toCore(a))),

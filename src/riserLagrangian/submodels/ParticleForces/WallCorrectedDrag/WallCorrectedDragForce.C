@@ -71,7 +71,9 @@ Foam::WallCorrectedDragForce<CloudType>::WallCorrectedDragForce
     (
         modelEntries::pipeDiameter
         (
-            this->coeffs(), carrier_.hasRiser() ? &carrier_.riser() : nullptr
+            this->coeffs(),
+            riserModel::New(mesh).found()
+          ? &riserModel::New(mesh).flow() : nullptr
         )
     ),
     lastDiameter_(-1),
