@@ -88,6 +88,10 @@ expect("pulseFrequency without pulseAmplitude",
        "entry 'pulseFrequency' without 'pulseAmplitude'", riser("drive { pulseFrequency 1; }"))
 expect("pulseFrequency 0", "entry 'pulseFrequency' = 0 is outside the allowed range (0, 1000]",
        riser("drive { pulseAmplitude 0.1; pulseFrequency 0; }"))
+expect("pulseFrequency nan", "entry 'pulseFrequency' = nan is not a finite number",
+       riser("drive { pulseAmplitude 0.1; pulseFrequency nan; }"))
+expect("pulseAmplitude nan", "entry 'pulseAmplitude' = nan is not a finite number",
+       riser("drive { pulseAmplitude nan; pulseFrequency 1; }"))
 expect("pulseAmplitude < 0", "entry 'pulseAmplitude' = -0.1 is outside the allowed range [0, 100]",
        riser("drive { pulseAmplitude -0.1; pulseFrequency 1; }"))
 expect("alphaMax 0.8", "entry 'alphaMax' = 0.8 is outside the allowed range (0, 0.74]",

@@ -206,10 +206,14 @@ check(chi["stochasticDispersionRAS"] > 27.9,
 # --- bad input -------------------------------------------------------------
 bad = (("Sct", "langevinDispersionRASCoeffs { Sct 0.05; }", "'Sct'", False),
        ("beta", "langevinDispersionRASCoeffs { beta -1; }", "'beta'", False),
+       ("Sct nan", "langevinDispersionRASCoeffs { Sct nan; }",
+        "entry 'Sct' = nan is not a finite number", False),
+       ("beta nan", "langevinDispersionRASCoeffs { beta nan; }",
+        "entry 'beta' = nan is not a finite number", False),
        ("misspelt", "langevinDispersionRASCoeffs { Sc 0.7; }", "unknown entry 'Sc'", False),
        ("laminar", "", "the carrier is laminar", True))
 for name, coeffs, expected, laminar in bad:
-    case = work + "/bad_" + name
+    case = work + "/bad_" + name.replace(" ", "_")
     make_case(case, (-0.5, 0.5, -0.5, 0.5, -0.5, 0.5), (2, 2, 2), False, lambda x: sigma, TL,
               [(0.1, 0.1, 0.1)], 0.01, 0.02, 0.02, coeffs=coeffs, laminar=laminar)
     log = solve(case, may_fail=True)
