@@ -13,9 +13,12 @@ powerLaw: the 1/7 power law of a turbulent pipe flow
 (riserfoam.pipeflow.power_law) at the drive's bulkVelocity (default
 uCentre/2), at the cell centres that `postProcess -func writeCellCentres
 -time 0` writes to 0/C. The wall is noSlip, the ends cyclic (a periodic
-riser section from bin/riserMesh -ends cyclic), the riser frame.
+riser section from bin/riserMesh -ends cyclic), the riser frame; the
+Poiseuille profile also in the lab frame (riserProperties' frame lab: the
+flow moves with the riser, its wall is movingWallVelocity).
 """
 import os
+import re
 import sys
 
 from riserfoam import cases
@@ -31,7 +34,10 @@ def main():
     if profile == "poiseuille":
         transport = os.path.join("constant", "transportProperties")
         mu = ff.read_entry(transport, "nu") * ff.read_entry(transport, "rhoInf")
-        cases.poiseuille_start(".", riser, "riser", "noSlip", mu)
+        text = open(os.path.join("constant", "riserProperties")).read()
+        lab = re.search(r"^\s*frame\s+lab\s*;", text, re.M) is not None
+        cases.poiseuille_start(".", riser, "lab" if lab else "riser",
+                               "movingWallVelocity" if lab else "noSlip", mu)
         print("initCarrier: 0/U, the Poiseuille profile, and 0/uniform/riserDrive")
         return
     if profile == "powerLaw":
