@@ -42,7 +42,7 @@ template<class CloudType>
 std::optional<riser::WetRestitution>
 Foam::RiserContact<CloudType>::wetContact(const dictionary& parent) const
 {
-    if (!parent.found("wet", false))
+    if (!parent.found("wet"))
     {
         return std::nullopt;
     }

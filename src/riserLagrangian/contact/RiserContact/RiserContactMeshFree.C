@@ -233,7 +233,7 @@ Foam::RiserContact<CloudType>::meshFreeContacts
         if (pairLaw_.valid() && Pstream::parRun())
         {
             List<vector> x(own.size());
-            HashTable<label, labelPair, labelPair::Hash<>> ownOf(2*own.size());
+            HashTable<label, labelPair, labelPairHash> ownOf(2*own.size());
             forAll(own, i)
             {
                 x[i] = own[i].x;
@@ -386,7 +386,7 @@ Foam::RiserContact<CloudType>::meshFreeContacts
 
     // each particle's key to its place in local, and the pair springs
     // handed over by each particle
-    HashTable<label, labelPair, labelPair::Hash<>> grainOf(2*n);
+    HashTable<label, labelPair, labelPairHash> grainOf(2*n);
     forAll(local, i)
     {
         grainOf.insert(all[local[i]].key, i);

@@ -5,6 +5,7 @@
 
 #include "grainExchange.H"
 #include "IOstreams.H"
+#include "riserFoamVersion.H"
 #include "DynamicList.H"
 #include "FixedList.H"
 
@@ -27,8 +28,7 @@ Foam::labelListList Foam::nearProcessors
         mine[0] = min(mine[0], p);
         mine[1] = max(mine[1], p);
     }
-    Pstream::gatherList(boxes);
-    Pstream::scatterList(boxes);
+    riserCompatibility::allGatherList(boxes);
 
     labelListList send(Pstream::nProcs());
     forAll(boxes, proc)

@@ -59,8 +59,7 @@ particleKernel::kernelType readType(const dictionary& dict)
 //  processors (one reduction for all)
 void combineSums(scalarField& sums)
 {
-    Pstream::listCombineGather(sums, plusEqOp<scalar>());
-    Pstream::listCombineScatter(sums);
+    riserCompatibility::listCombineAll(sums, plusEqOp<scalar>());
 }
 
 
@@ -738,8 +737,7 @@ void Foam::particleKernel::diffuse
     }
     combineSums(total0);
     combineSums(stop);
-    Pstream::listCombineGather(lowest, minEqOp<scalar>());
-    Pstream::listCombineScatter(lowest);
+    riserCompatibility::listCombineAll(lowest, minEqOp<scalar>());
 
     // the fields in groups of up to four, each group's solves in lock-step
     for (label first = 0; first < nFields; first += 4)

@@ -113,7 +113,7 @@ void Foam::HistoryParcel<ParcelType>::checkPlaces(const CloudType& c)
         }
         if (!defect.str().empty())
         {
-            const IOobject io(c.fieldIOobject("coordinates", IOobject::NO_READ));
+            const IOobject io(riserCompatibility::cloudFieldIO(c, "coordinates", IOobject::NO_READ));
             FatalErrorInFunction
                 << "Cloud " << c.name() << " at time " << c.time().timeName()
                 << ": particle " << i << " of " << io.path() << " (the"
@@ -131,7 +131,7 @@ template<class CloudType>
 void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 {
     const bool valid = c.size();
-    IOobject stepsIO(c.fieldIOobject("historySteps", IOobject::MUST_READ));
+    IOobject stepsIO(riserCompatibility::cloudFieldIO(c, "historySteps", IOobject::MUST_READ));
     const bool histories = stepsIO.typeHeaderOk<IOField<label>>(true);
 
     // the fields of fields (one list per particle) of the riser parcel: a
@@ -153,13 +153,13 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
         if
         (
             valid && (histories || !history)
-         && !isFile(c.fieldIOobject(name, IOobject::MUST_READ).objectPath())
+         && !isFile(riserCompatibility::cloudFieldIO(c, name, IOobject::MUST_READ).objectPath())
         )
         {
             FatalErrorInFunction
                 << "Cloud " << c.name() << " at time " << c.time().timeName()
                 << ": " << c.size() << " particles but no field " << name
-                << " (" << c.fieldIOobject(name, IOobject::NO_READ).objectPath()
+                << " (" << riserCompatibility::cloudFieldIO(c, name, IOobject::NO_READ).objectPath()
                 << "). reconstructPar of OpenFOAM v1912 leaves out the ascii"
                 << " fields of fields unless they are selected: run"
                 << " reconstructPar -lagrangianFields '(\".*\")'"
@@ -178,7 +178,7 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
     auto readTrace = [&c, valid](const word& name, auto member, const bool first)
     {
         typedef typename std::decay<decltype(contactTrace().*member)>::type Type;
-        IOobject io(c.fieldIOobject(name, IOobject::MUST_READ));
+        IOobject io(riserCompatibility::cloudFieldIO(c, name, IOobject::MUST_READ));
         if (first && !io.template typeHeaderOk<IOField<Type>>(true))
         {
             return false;
@@ -224,14 +224,14 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
 
     // the contacts in progress: none for a cloud written without them
     {
-        IOobject wallIO(c.fieldIOobject("wallContactInProgress", IOobject::MUST_READ));
+        IOobject wallIO(riserCompatibility::cloudFieldIO(c, "wallContactInProgress", IOobject::MUST_READ));
         if (isFile(wallIO.objectPath()))
         {
             scalarFieldCompactIOField wall(wallIO, valid);
             c.checkFieldFieldIOobject(c, wall);
             scalarFieldCompactIOField pairs
             (
-                c.fieldIOobject("pairContactsInProgress", IOobject::MUST_READ),
+                riserCompatibility::cloudFieldIO(c, "pairContactsInProgress", IOobject::MUST_READ),
                 valid
             );
             c.checkFieldFieldIOobject(c, pairs);
@@ -269,19 +269,19 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
     IOField<label> steps(stepsIO, valid);
     c.checkFieldIOobject(c, steps);
 
-    IOField<vector> slip0(c.fieldIOobject("historySlip0", IOobject::MUST_READ), valid);
+    IOField<vector> slip0(riserCompatibility::cloudFieldIO(c, "historySlip0", IOobject::MUST_READ), valid);
     c.checkFieldIOobject(c, slip0);
 
     vectorFieldCompactIOField window
     (
-        c.fieldIOobject("historyWindow", IOobject::MUST_READ),
+        riserCompatibility::cloudFieldIO(c, "historyWindow", IOobject::MUST_READ),
         valid
     );
     c.checkFieldFieldIOobject(c, window);
 
     vectorFieldCompactIOField tail
     (
-        c.fieldIOobject("historyTail", IOobject::MUST_READ),
+        riserCompatibility::cloudFieldIO(c, "historyTail", IOobject::MUST_READ),
         valid
     );
     c.checkFieldFieldIOobject(c, tail);
@@ -342,42 +342,42 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
     const label np = c.size();
     const bool valid = np;
 
-    IOField<label> steps(c.fieldIOobject("historySteps", IOobject::NO_READ), np);
-    IOField<vector> slip0(c.fieldIOobject("historySlip0", IOobject::NO_READ), np);
-    IOField<label> contacts(c.fieldIOobject("wallContacts", IOobject::NO_READ), np);
+    IOField<label> steps(riserCompatibility::cloudFieldIO(c, "historySteps", IOobject::NO_READ), np);
+    IOField<vector> slip0(riserCompatibility::cloudFieldIO(c, "historySlip0", IOobject::NO_READ), np);
+    IOField<label> contacts(riserCompatibility::cloudFieldIO(c, "wallContacts", IOobject::NO_READ), np);
     IOField<scalar> overlapMax
     (
-        c.fieldIOobject("wallOverlapMax", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "wallOverlapMax", IOobject::NO_READ),
         np
     );
     IOField<scalar> impactSpeed
     (
-        c.fieldIOobject("wallImpactSpeed", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "wallImpactSpeed", IOobject::NO_READ),
         np
     );
     IOField<scalar> wallEnergy
     (
-        c.fieldIOobject("wallEnergy", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "wallEnergy", IOobject::NO_READ),
         np
     );
     IOField<label> pairContacts
     (
-        c.fieldIOobject("pairContacts", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "pairContacts", IOobject::NO_READ),
         np
     );
     IOField<scalar> pairImpactSpeed
     (
-        c.fieldIOobject("pairImpactSpeed", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "pairImpactSpeed", IOobject::NO_READ),
         np
     );
     IOField<scalar> pairEnergy
     (
-        c.fieldIOobject("pairEnergy", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "pairEnergy", IOobject::NO_READ),
         np
     );
     IOField<vector> subStepOffset
     (
-        c.fieldIOobject("subStepOffset", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "subStepOffset", IOobject::NO_READ),
         np
     );
     collectFields
@@ -388,23 +388,23 @@ void Foam::HistoryParcel<ParcelType>::writeFields(const CloudType& c)
 
     vectorFieldCompactIOField window
     (
-        c.fieldIOobject("historyWindow", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "historyWindow", IOobject::NO_READ),
         np
     );
     vectorFieldCompactIOField tail
     (
-        c.fieldIOobject("historyTail", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "historyTail", IOobject::NO_READ),
         np
     );
 
     scalarFieldCompactIOField wallInProgress
     (
-        c.fieldIOobject("wallContactInProgress", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "wallContactInProgress", IOobject::NO_READ),
         np
     );
     scalarFieldCompactIOField pairsInProgress
     (
-        c.fieldIOobject("pairContactsInProgress", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(c, "pairContactsInProgress", IOobject::NO_READ),
         np
     );
 

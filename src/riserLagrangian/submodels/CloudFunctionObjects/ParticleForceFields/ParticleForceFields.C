@@ -54,7 +54,7 @@ void Foam::ParticleForceFields<CloudType>::write()
             i,
             new IOField<vector>
             (
-                cloud.fieldIOobject("F_" + forces[i].type(), IOobject::NO_READ),
+                riserCompatibility::cloudFieldIO(cloud, "F_" + forces[i].type(), IOobject::NO_READ),
                 cloud.size()
             )
         );

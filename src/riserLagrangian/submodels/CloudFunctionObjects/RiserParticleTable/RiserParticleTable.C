@@ -45,7 +45,7 @@ template<class CloudType>
 void Foam::RiserParticleTable<CloudType>::readOrigins()
 {
     CloudType& cloud = this->owner();
-    IOobject io(cloud.fieldIOobject("liftOrigin", IOobject::MUST_READ));
+    IOobject io(riserCompatibility::cloudFieldIO(cloud, "liftOrigin", IOobject::MUST_READ));
     if (io.typeHeaderOk<IOField<scalar>>(true))
     {
         restartOrigins_.reset(new scalarField(IOField<scalar>(io)));
@@ -159,7 +159,7 @@ void Foam::RiserParticleTable<CloudType>::write()
     const CloudType& cloud = this->owner();
     IOField<scalar>
     (
-        cloud.fieldIOobject("liftOrigin", IOobject::NO_READ),
+        riserCompatibility::cloudFieldIO(cloud, "liftOrigin", IOobject::NO_READ),
         origins()
     ).write(cloud.size() > 0);
 }

@@ -39,8 +39,7 @@ void Foam::RiserTransportStatistics<CloudType>::contactTally::reduceAll()
     reduce(speedSum, sumOp<scalar>());
     reduce(speedMax, maxOp<scalar>());
     reduce(energy, sumOp<scalar>());
-    Pstream::listCombineGather(histogram, plusEqOp<scalar>());
-    Pstream::listCombineScatter(histogram);
+    riserCompatibility::listCombineAll(histogram, plusEqOp<scalar>());
 }
 
 
@@ -171,7 +170,7 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
 
     // a parcel new to the cloud starts from an empty trace
     const traceState none(Zero);
-    HashTable<traceState, labelPair, labelPair::Hash<>> states(2*cloud.size());
+    HashTable<traceState, labelPair, labelPairHash> states(2*cloud.size());
     for (const auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
@@ -215,8 +214,7 @@ Foam::RiserTransportStatistics<CloudType>::axialVolumes()
             riser::axialBin(p.position().z(), section_.z0, section_.length, axialBins_);
         volume[bin] += p.nParticle()*p.volume();
     }
-    Pstream::listCombineGather(volume, plusEqOp<scalar>());
-    Pstream::listCombineScatter(volume);
+    riserCompatibility::listCombineAll(volume, plusEqOp<scalar>());
     return volume;
 }
 

@@ -5,6 +5,7 @@
 
 #include "RiserInletInjection.H"
 #include "cyclicPolyPatch.H"
+#include "riserFoamVersion.H"
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -35,10 +36,8 @@ void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt
         nearAll[Pstream::myProcNo()].transfer(x);
         nearAllD[Pstream::myProcNo()].transfer(d);
     }
-    Pstream::gatherList(nearAll);
-    Pstream::scatterList(nearAll);
-    Pstream::gatherList(nearAllD);
-    Pstream::scatterList(nearAllD);
+    riserCompatibility::allGatherList(nearAll);
+    riserCompatibility::allGatherList(nearAllD);
     const DynamicList<vector>& places = this->places_;
     const DynamicList<scalar>& diameters = this->diameters_;
     DynamicList<vector> nearX;

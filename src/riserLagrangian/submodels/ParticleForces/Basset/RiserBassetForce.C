@@ -78,7 +78,7 @@ void Foam::RiserBassetForce<CloudType>::checkStoredHistories()
 
     dictionary& stored = cloud.outputProperties().subDictOrAdd(typeName);
     const bool historiesWritten =
-        cloud.fieldIOobject("historySteps", IOobject::MUST_READ)
+        riserCompatibility::cloudFieldIO(cloud, "historySteps", IOobject::MUST_READ)
        .template typeHeaderOk<IOField<label>>(true);
     if (historiesWritten && stored.found("method"))
     {
@@ -262,7 +262,7 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
     kernel_(readKernel(this->coeffs(), mesh.time().deltaTValue())),
     stepOpen_(false),
     endedTime_(-GREAT),
-    unchecked_(owner.fieldIOobject("historySteps", IOobject::NO_READ).path())
+    unchecked_(riserCompatibility::cloudFieldIO(owner, "historySteps", IOobject::NO_READ).path())
 {
     checkStoredHistories();
 }
