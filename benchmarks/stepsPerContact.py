@@ -54,6 +54,16 @@ def make(case, steps):
     cases.run(["blockMesh", "-case", case], os.path.join(case, "log.blockMesh"))
 
 
+def run_copy(base, case, steps):
+    """base copied to case with stepsPerContact steps, run by riserParcelFoam;
+    returns the log's text"""
+    shutil.rmtree(case, ignore_errors=True)
+    shutil.copytree(base, case)
+    oreCloud.ff.set_nested(os.path.join(case, "constant/kinematicCloudProperties"),
+                           "subModels/riserContactCoeffs/stepsPerContact", str(steps))
+    return cases.run(["riserParcelFoam", "-case", case], os.path.join(case, "log.riserParcelFoam"))
+
+
 def fluid_rows(work):
     """The flagship with its fluid forces at each stepsPerContact, against
     stepsPerContact 640: one row per value"""
@@ -63,11 +73,7 @@ def fluid_rows(work):
     runs = {}
     for n in STEPS:
         case = os.path.join(work, "flagship%d" % n)
-        shutil.rmtree(case, ignore_errors=True)
-        shutil.copytree(base, case)
-        oreCloud.ff.set_nested(os.path.join(case, "constant/kinematicCloudProperties"),
-                               "subModels/riserContactCoeffs/stepsPerContact", str(n))
-        cases.run(["riserParcelFoam", "-case", case], os.path.join(case, "log.riserParcelFoam"))
+        run_copy(base, case, n)
         c = cases.wall_contacts(case)
         table = tables.read(os.path.join(case, "postProcessing/lagrangian/kinematicCloud/"
                                          "riserParticleTable/particles.dat"))
@@ -206,13 +212,7 @@ def main():
                   nz=max(4, int(round(L / 0.02))), Cv=Cv)
     for repeat in range(3):
         for n in STEPS:
-            case = os.path.join(work, "scene%d" % n)
-            shutil.rmtree(case, ignore_errors=True)
-            shutil.copytree(scene, case)
-            oreCloud.ff.set_nested(os.path.join(case, "constant/kinematicCloudProperties"),
-                                   "subModels/riserContactCoeffs/stepsPerContact", str(n))
-            text = cases.run(["riserParcelFoam", "-case", case],
-                             os.path.join(case, "log.riserParcelFoam"))
+            text = run_copy(scene, os.path.join(work, "scene%d" % n), n)
             rows[n]["time_s"].append(oreCloud.steps_time(text))
     base = min(rows[40]["time_s"])
     for r in rows.values():
