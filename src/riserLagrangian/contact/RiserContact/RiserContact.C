@@ -141,7 +141,6 @@ Foam::RiserContact<CloudType>::RiserContact
         )
     ),
     addedMassCoeff_(readAddedMassCoeff()),
-    section_(riser_.section()),
     cellAxisDistance_
     (
         owner.mesh().changing() ? scalarField() : cellAxisDistances(owner.mesh())
@@ -249,7 +248,6 @@ Foam::RiserContact<CloudType>::RiserContact
     addedMassCoeff_(cm.addedMassCoeff_),
     pairLaw_(cm.pairLaw_.valid() ? new riser::HertzMindlin(cm.pairLaw_()) : nullptr),
     needs_(cm.needs_),
-    section_(cm.section_),
     cellAxisDistance_(cm.cellAxisDistance_),
     ledger_(cm.ledger_)
 {}

@@ -241,7 +241,7 @@ Foam::RiserContact<CloudType>::meshFreeContacts
             }
             const labelListList send = nearProcessors
             (
-                x, 2*radiusMax_ + reach_ + SMALL, section_.periodic ? section_.length : 0
+                x, 2*radiusMax_ + reach_ + SMALL, riser_.section().period()
             );
             // (the springs of the particles sent)
             List<labelList> sendSprings(send.size());
@@ -451,9 +451,9 @@ Foam::RiserContact<CloudType>::meshFreeContacts
         {
             grains.addWall(wall);
         }
-        if (section_.periodic)
+        if (riser_.section().periodic)
         {
-            grains.setPeriodic(section_.z0, section_.length);
+            grains.setPeriodic(riser_.section().z0, riser_.section().length);
         }
         grains.setTime(t0);
         // the own grains without contacts: their free motion under the

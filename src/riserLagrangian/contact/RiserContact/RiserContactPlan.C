@@ -171,9 +171,9 @@ void Foam::RiserContact<CloudType>::forEachNearPair
 ) const
 {
     riser::NearPairs pairs;
-    if (section_.periodic)
+    if (riser_.section().periodic)
     {
-        pairs.setPeriodic(section_.z0, section_.length);
+        pairs.setPeriodic(riser_.section().z0, riser_.section().length);
     }
     pairs.forEachPair(x, cutoff, f);
 }
@@ -194,7 +194,7 @@ Foam::scalar Foam::RiserContact<CloudType>::pairGap
         riser::nearestImage
         (
             ka < kb ? riser::Vector(xb - xa) : riser::Vector(xa - xb),
-            section_.periodic ? section_.length : 0
+            riser_.section().period()
         ).norm()
       - (Ra + Rb);
 }
@@ -288,7 +288,7 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
 
     // this processor's particles (0 .. nOwn - 1), then the ghosts
     const labelListList send =
-        nearProcessors(ownX, cutoff, section_.periodic ? section_.length : 0);
+        nearProcessors(ownX, cutoff, riser_.section().period());
     // what this processor sends the others in the plan: copies and bytes
     label copiesSent = 0;
     std::size_t bytesSent = 0;

@@ -71,6 +71,8 @@ void Foam::RiserParticleTable<CloudType>::updateLift()
     }
     claimParticleStates(lift_, missing);
 
+    // the section's length, to unwrap heights across cyclic ends
+    const scalar length = riser_.section().length;
     for (auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
@@ -86,8 +88,8 @@ void Foam::RiserParticleTable<CloudType>::updateLift()
         // unwrap the height across the ends of a cyclic riser
         vector2D& state = lift_[key];
         const scalar jump = z - state.y();
-        if (jump > 0.5*length_) state.x() += length_;
-        if (jump < -0.5*length_) state.x() -= length_;
+        if (jump > 0.5*length) state.x() += length;
+        if (jump < -0.5*length) state.x() -= length;
         state.y() = z;
     }
     released_.clear();
@@ -106,8 +108,7 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
 :
     CloudFunctionObject<CloudType>(dict, owner, modelName, typeName),
     riser_(riserModel::New(owner.mesh())),
-    interval_(checkedEntry::count(this->coeffDict(), "interval", 1, 1000000000, 1)),
-    length_(riser_.section().length)
+    interval_(checkedEntry::count(this->coeffDict(), "interval", 1, 1000000000, 1))
 {
     checkedEntry::allowedKeys(this->coeffDict(), {"type", "interval"});
     riser_.flow();   // FatalError now if there is no riser
@@ -125,7 +126,6 @@ Foam::RiserParticleTable<CloudType>::RiserParticleTable
     riser_(t.riser_),
     interval_(t.interval_),
     calls_(t.calls_),
-    length_(t.length_),
     lift_(t.lift_),
     released_(t.released_),
     restartOrigins_

@@ -82,7 +82,7 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
         );
     };
     std::ostringstream z0, width;
-    z0 << section_.z0;
+    z0 << riser_.section().z0;
     width << impactSpeedBinWidth_;
     transportFile_ = open
     (
@@ -211,7 +211,11 @@ Foam::RiserTransportStatistics<CloudType>::axialVolumes()
     {
         const endOfStep<typename CloudType::parcelType> done(p);
         const label bin =
-            riser::axialBin(p.position().z(), section_.z0, section_.length, axialBins_);
+            riser::axialBin
+            (
+                p.position().z(), riser_.section().z0, riser_.section().length,
+                axialBins_
+            );
         volume[bin] += p.nParticle()*p.volume();
     }
     riserCompatibility::listCombineAll(volume, plusEqOp<scalar>());
@@ -285,12 +289,12 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         row.t = t;
         row.parcels = parcels;
         row.particles = particles;
-        row.Cv = volume/section_.volume;
+        row.Cv = volume/riser_.section().volume;
         row.URel = particles > 0 ? toCore(URel/particles) : toCore(vector::one*nan);
         row.slip = particles > 0 ? toCore(slip/particles) : toCore(vector::one*nan);
         row.liftingEfficiency =
             flow.centreLineSpeed() > 0 ? row.URel.z()/flow.centreLineSpeed() : nan;
-        row.massFlux = axialMomentum/section_.volume;
+        row.massFlux = axialMomentum/riser_.section().volume;
         const scalar interval = t - lastSample_;
         row.contacts = wall_.contacts;
         row.contactRate =
@@ -321,8 +325,8 @@ void Foam::RiserTransportStatistics<CloudType>::sample
             riser::writeStatisticsRow(os, row);
             os.flush();
         };
-        writeProfile(radialFile_(), radialVolume/(section_.volume/radialBins_));
-        writeProfile(axialFile_(), axialVolume/(section_.volume/axialBins_));
+        writeProfile(radialFile_(), radialVolume/(riser_.section().volume/radialBins_));
+        writeProfile(axialFile_(), axialVolume/(riser_.section().volume/axialBins_));
         writeProfile(impactFile_(), wall_.histogram);
         writeProfile(pairImpactFile_(), pair_.histogram);
         transportFile_().flush();
@@ -371,7 +375,6 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
             this->coeffDict(), "impactSpeedBinWidth", 0, false, 100, true, 0.1
         )
     ),
-    section_(riser_.section()),
     lastSample_(owner.time().startTime().value())
 {
     wall_.histogram.setSize(impactSpeedBins_, Zero);
@@ -433,7 +436,6 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     blockageFraction_(s.blockageFraction_),
     impactSpeedBins_(s.impactSpeedBins_),
     impactSpeedBinWidth_(s.impactSpeedBinWidth_),
-    section_(s.section_),
     traces_(s.traces_),
     started_(s.started_),
     lastSample_(s.lastSample_),
@@ -475,7 +477,7 @@ void Foam::RiserTransportStatistics<CloudType>::postEvolve
     countContacts();
 
     const scalarList volume = axialVolumes();
-    const scalar sliceVolume = section_.volume/axialBins_;
+    const scalar sliceVolume = riser_.section().volume/axialBins_;
     label blockedBins = 0;
     for (const scalar V : volume)
     {

@@ -92,7 +92,7 @@ void Foam::RiserFillInjection<CloudType>::fill()
                             (
                                 riser::nearestImage
                                 (
-                                    toCore(x - places[j]), periodic ? L : 0
+                                    toCore(x - places[j]), section.period()
                                 )
                             );
                         const scalar reach = r + 0.5*diameters[j] + gap;
