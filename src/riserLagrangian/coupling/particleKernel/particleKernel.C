@@ -564,7 +564,8 @@ Foam::particleKernel::particleKernel
     largestDiameter_(0),
     sizesTimeIndex_(-1),
     largestCellSize_(0),
-    crossSection_(0)
+    crossSection_(0),
+    shares_(mesh)
 {
     if (type_ == kernelType::diffusion && unit_ == widthUnit::metres)
     {

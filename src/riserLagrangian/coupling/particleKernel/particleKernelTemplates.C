@@ -74,6 +74,23 @@ void Foam::particleKernel::spreadAmount
 
 
 template<class CloudType>
+Foam::tmp<Foam::scalarField>
+Foam::particleKernel::theta(const CloudType& cloud) const
+{
+    tmp<scalarField> ttheta(new scalarField(mesh_.nCells(), Zero));
+    scalarField& theta = ttheta.ref();
+    scalarField pointVolumes(mesh_.nPoints(), Zero);
+    for (const auto& p : cloud)
+    {
+        shares_.deposit(p, p.nParticle()*p.volume(), theta, pointVolumes);
+    }
+    shares_.toCells(pointVolumes, theta);
+    theta /= mesh_.V().field();
+    return ttheta;
+}
+
+
+template<class CloudType>
 Foam::scalar Foam::particleKernel::largestDiameter(const CloudType& cloud)
 {
     scalar d = 0;
@@ -96,7 +113,16 @@ Foam::tmp<Foam::volScalarField> Foam::particleKernel::alphac
     const scalar dMax = largestDiameter(cloud);
     tmp<volScalarField> talphac(workField(cloud.name() + ":alphac"));
     volScalarField& alpha = talphac.ref();
-    alpha.primitiveFieldRef() = cloud.theta()().primitiveField();
+    // the deposit continuous in the particles' positions where the kernel
+    // spreads it, the stock one (whole in the cell of the centre) otherwise
+    if (spreads(dMax))
+    {
+        alpha.primitiveFieldRef() = theta(cloud);
+    }
+    else
+    {
+        alpha.primitiveFieldRef() = cloud.theta()().primitiveField();
+    }
     spreadDensity(alpha.ref(), dMax);
     alpha.primitiveFieldRef() = max(1 - alpha.primitiveField(), alphaMin);
     alpha.correctBoundaryConditions();
