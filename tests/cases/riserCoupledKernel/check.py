@@ -21,7 +21,9 @@ in a step). Checked:
   dw/dt the change of the ores' mean axial velocity over the window
   (they still approach their terminal speed: measured -0.013 to
   -0.015 m/s^2, a -0.3 % correction). Within 1 % on each grid: measured
-  0.0015 %, 0.04 % and 0.02 % (h = 0.56 d, 1.11 d, 1.67 d). One-cell
+  0.008 %, 0.005 % and 0.002 % (h = 0.56 d, 1.11 d, 1.67 d; 0.0004 %,
+  0.02 % and 0.03 % with the kernel's deposits in the cell of each ore's
+  centre, before they were continuous in its position). One-cell
   deposits (type none) on the finest grid are 35 % off (an ore of 4.8
   times a cell's volume clips alpha_c at the floor and drags the carrier
   of its cell alone: printed, and checked to be more than 5 % off, so
@@ -32,7 +34,10 @@ in a step). Checked:
   at the end and -dp/dz (over C_v (rho_p - rho_f) g, each grid's C_v:
   the O-grids' polygonal walls differ in area) change by less than 5 %
   (the requirement) between the finest and each other grid; measured
-  0.10 % and 0.21 % (speed), 0.06 % and 0.02 % (gradient); the one-cell
+  0.20 % and 0.36 % (speed), 0.04 % and 0.07 % (gradient; 0.13 %, 0.20 %,
+  0.06 % and 0.0006 % with the deposits in the cell of each ore's centre:
+  the points' shares widen the deposit by about a cell before the kernel
+  spreads it, more on the coarser grids); the one-cell
   deposits change the speed by 14 % and the gradient by 20 % between
   h = 0.56 d and 1.67 d (printed);
 - alpha_c: its volume average is 1 - C_v to 1e-9 (the spread theta keeps
