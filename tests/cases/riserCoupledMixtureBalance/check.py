@@ -58,15 +58,17 @@ Pa/m low), and 0.59 % with the riser at rest and no contact (15 ores
 rising in the core), 0.015 % there with two: the lag of one corrector,
 not the contacts. Without ores the carrier's wall force from
 wallShearStress equals the drive's gradient to 1e-8 on this grid. 0.5 %
-is six times the largest residual measured and a seventh of the
-carrier's wall shear's share. Measured (-dp/dz against the sum; in
+is four and a half times the largest residual measured and a seventh of
+the carrier's wall shear's share. Measured (-dp/dz against the sum; in
 brackets the ores' wall friction, the carrier's wall shear and the ores'
 momentum change, Pa/m, of C_v (rho_p - rho_f) g = 98.73 Pa/m): alone
-122.60 against 122.62, 1.5e-4 (25.06, 4.31, -5.48; tau_w 0.62 Pa of the
-ores, 0.11 Pa of the carrier; 67 contacts); pairs 116.09 against 116.19,
-8.6e-4 (18.33, 4.27, -5.15; 63 contacts). Without the ores' wall
-friction the balance would be 26 % (19 %) off, without the carrier's
-3.6 %: both terms are seen. The ores rise at 0.89 (0.84) m/s on average.
+122.51 against 122.64, 1.1e-3 (25.85, 4.29, -6.23; tau_w 0.64 Pa of the
+ores, 0.11 Pa of the carrier; 70 contacts); pairs 116.13 against 116.22,
+7.4e-4 (17.19, 4.27, -3.97; 62 contacts). (With the kernel's deposits in
+the cell of each ore's centre, before they were continuous in its
+position: 1.5e-4 and 8.6e-4.) Without the ores' wall friction the
+balance would be 27 % (17 %) off, without the carrier's 3.5 % (3.7 %): both
+terms are seen. The ores rise at 0.89 (0.84) m/s on average.
 """
 import concurrent.futures
 import math
