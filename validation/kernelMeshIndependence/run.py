@@ -23,16 +23,19 @@ contrast, the one-cell deposit (kernel type none) on the grids of h = d
 and 4 d.
 
 Measured (results/kernelMeshIndependence.md): with the kernel the slip
-changes by +0.05 %, -0.04 %, -0.78 % (h = d, 2 d, 4 d against 0.5 d) and
--dp/dz/(C_v (rho_p - rho_f) g) by -0.04 %, -0.10 %, -0.13 %: met. Part of
-the -0.78 % is the coarsest grid's C_v, 0.1026 against 0.1000 (the same
-ores in the smaller volume of its polygonal wall): the slip over the Wen
-& Yu balance at each grid's own C_v changes by +0.07 %, +0.10 %, -0.19 %.
-The one-cell deposit slows the ores by 40 % at h = d (an ore of half a
-cell's volume: alpha_c of its cell about 0.5, and the Wen & Yu drag grows
-as alpha_c^-3.65) and is within 0.2 % at h = 4 d, where the ore is 1/120
-of its cell. Solver CPU 222 s on the finest grid, 7 to 21 s on the
-others; about 10 minutes on 2 shared cores.
+changes by +0.03 %, +0.08 %, -0.21 % (h = d, 2 d, 4 d against 0.5 d) and
+-dp/dz/(C_v (rho_p - rho_f) g) by -0.05 %, -0.11 %, -0.13 %: met. The
+fill takes each grid's own volume (1,919 to 1,871 ores, C_v = 0.1000 on
+every grid: the coarser O-grids' polygonal walls hold less volume), and
+the kernel's deposits are continuous in each ore's position
+(particleKernel). (Before both, with 1,920 ores on every grid, C_v up
+to 0.1026 on the coarsest, and each ore's volume and reaction deposited
+in the cell of its centre: +0.05 %, -0.04 %, -0.78 % and -0.04 %,
+-0.10 %, -0.13 %.) The one-cell deposit slows the ores by 40 % at
+h = d (an ore of half a cell's volume: alpha_c of its cell about 0.5,
+and the Wen & Yu drag grows as alpha_c^-3.65) and is within 0.9 % at
+h = 4 d, where the ore is 1/120 of its cell. Solver CPU 167 s on the
+finest grid, 8 to 20 s on the others; about 3 minutes on 2 cores.
 
 usage: run.py [-endTime 0.3] [-j 2] [-scratch DIR] [-reuse]
 
