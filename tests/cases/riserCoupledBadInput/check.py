@@ -6,7 +6,9 @@ model whose field is missing from the start time, refused naming the
 model's entry and the field's file, and a misspelt simulationType,
 refused by OpenFOAM naming the entry and the allowed types; the explicit
 source scheme for U; a drive's pulsation without its amplitude or its
-frequency, or out of range; a drag with a voidage function in a one-way run); a
+frequency, or out of range; a drag with a voidage function in a one-way run;
+cellValueSourceCorrection or a steady cloud with the kernel of type
+diffusion); a
 cloud that is not coupled runs one-way and says so."""
 import os
 import shutil
@@ -110,6 +112,21 @@ expect("voidage in a one-way run (its carrier is not displaced)",
 expect("a kernel wider than the riser", "entry 'width'",
        cloud(r"kernel \{ type none; \}",
              "kernel { type diffusion; width 0.2; widthUnit metres; }"))
+expect("cellValueSourceCorrection with the kernel (it takes a cell's own deposit)",
+       "entry 'cellValueSourceCorrection' = on",
+       lambda case: (cloud("coupled +false;", "coupled true;")(case),
+                     cloud("cellValueSourceCorrection off;", "cellValueSourceCorrection on;")(case),
+                     cloud(r"kernel \{ type none; \}",
+                           "kernel { type diffusion; width 0.08; widthUnit metres; }")(case)),
+       io=True)
+expect("a steady cloud with the kernel (its sources are relaxed without the points')",
+       "entry 'transient' = no",
+       lambda case: (cloud("coupled +false;", "coupled true;")(case),
+                     cloud("transient +yes;", "transient no; calcFrequency 1; maxTrackTime 1;")(case),
+                     cloud(r"sourceTerms \{", "sourceTerms { resetOnStartup false;")(case),
+                     cloud(r"kernel \{ type none; \}",
+                           "kernel { type diffusion; width 0.08; widthUnit metres; }")(case)),
+       io=True)
 expect("frame riser on a moving mesh (the check riserParcelFoam shares)",
        "frame riser needs a static mesh",
        lambda case: foamfields.write_dictionary(os.path.join(case, "constant/dynamicMeshDict"),
