@@ -585,9 +585,7 @@ Foam::particleKernel::~particleKernel()
 
 bool Foam::particleKernel::outdated(const label builtAt) const
 {
-    return
-        builtAt < 0
-     || (mesh_.changing() && builtAt != mesh_.time().timeIndex());
+    return pointShares::outdated(mesh_, builtAt);
 }
 
 

@@ -20,12 +20,7 @@ Foam::pointShares::pointShares(const fvMesh& mesh)
 
 const Foam::scalarField& Foam::pointShares::pointCellsVolume() const
 {
-    // once, or once per time step on a changing mesh
-    if
-    (
-        volumeTimeIndex_ < 0
-     || (mesh_.changing() && volumeTimeIndex_ != mesh_.time().timeIndex())
-    )
+    if (outdated(mesh_, volumeTimeIndex_))
     {
         const labelListList& pointCells = mesh_.pointCells();
         const scalarField& V = mesh_.V().field();
