@@ -127,13 +127,15 @@ int main(int argc, char** argv)
             s.v = riser.velocity(s.x, 0.0);
             const Run ref = run(AdaptiveScheme(1e-11, 1e9), law, s, T, every);
             // the engine's default tolerance (riserParticle's integrator)
-            const Run def = run(AdaptiveScheme(1e-10, 1e9), law, s, T, every);
+            const Run def =
+                run(AdaptiveScheme(AdaptiveScheme::defaultTolerance, 1e9), law, s, T, every);
             std::fprintf(f, "%s %g %.4e adaptive %.4e %.4e %.4e %d %ld %.4e\n", lawName, d, tau,
                          T/std::max(1L, def.stats.steps), T/std::max(1L, def.stats.steps)/tau,
                          largestDifference(def, ref)/D, int(def.failed),
                          def.stats.forceEvaluations, def.cpu);
-            std::printf("%s drag, d = %g m: tau_p = %.3e s; adaptive (1e-10): %ld steps per "
-                        "period, error %.2e D\n", lawName, d, tau, def.stats.steps,
+            std::printf("%s drag, d = %g m: tau_p = %.3e s; adaptive (%g): %ld steps per "
+                        "period, error %.2e D\n", lawName, d, tau,
+                        AdaptiveScheme::defaultTolerance, def.stats.steps,
                         largestDifference(def, ref)/D);
             for (double h : {3e-6, 1e-5, 3e-5, 1e-4, 3e-4, 1e-3, 3e-3, 1e-2})
             {

@@ -38,7 +38,11 @@ Foam::integratorChoice Foam::readIntegrator
     {
         const dictionary& coeffs = dict.subOrEmptyDict("adaptiveCoeffs");
         allowedKeys(coeffs, {"tolerance", "maxStep"});
-        const scalar tol = inRange(coeffs, "tolerance", 1e-14, true, 1, false, 1e-10);
+        const scalar tol = inRange
+        (
+            coeffs, "tolerance", 1e-14, true, 1, false,
+            riser::AdaptiveScheme::defaultTolerance
+        );
         const scalar maxStep = inRange(coeffs, "maxStep", 1e-10, true, VGREAT, true, VGREAT);
         c.adaptive.reset(new riser::AdaptiveScheme(tol, maxStep));
     }

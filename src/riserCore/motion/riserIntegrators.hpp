@@ -361,6 +361,10 @@ private:
 class AdaptiveScheme
 {
 public:
+    //- The default relative tolerance (riserParticle's adaptiveCoeffs;
+    //  validation/riserParticle: its cost and error against the others)
+    static constexpr double defaultTolerance = 1e-10;
+
     //- relative tolerance, and the largest step
     AdaptiveScheme(double tolerance, double maxStep)
     :
