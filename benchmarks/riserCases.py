@@ -246,7 +246,7 @@ cloudFunctions {}
 def write_system(case, application, steps, dt, write_at_end):
     write_dictionary(os.path.join(case, "system", "controlDict"), """
 application     %s;
-libs            ("libriserLagrangian.so");
+libs            ("%s");
 startFrom       startTime;
 startTime       0;
 stopAt          endTime;
@@ -261,7 +261,11 @@ writeCompression off;
 timeFormat      general;
 timePrecision   10;
 runTimeModifiable no;
-""" % (application, steps * dt, dt, steps if write_at_end else 100000000))
+""" % (application,
+       # the riser solvers link the riser library; the stock ones load the
+       # riser submodels registered for their clouds
+       "libriserLagrangian.so" if application.startswith("riser") else "libriserStockClouds.so",
+       steps * dt, dt, steps if write_at_end else 100000000))
     write_dictionary(os.path.join(case, "system", "fvSchemes"), """
 ddtSchemes           { default Euler; }
 gradSchemes          { default Gauss linear; }

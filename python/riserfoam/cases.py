@@ -248,7 +248,7 @@ boundary
 """ % {"a": -half, "b": half, "h": height, "nz": max(6, 3 * len(velocities))})
     ff.write_dictionary(case + "/system/controlDict", """
 application     icoUncoupledKinematicParcelFoam;
-libs            ("libriserLagrangian.so");
+libs            ("libriserStockClouds.so");
 startFrom       startTime;
 startTime       0;
 stopAt          endTime;

@@ -35,10 +35,9 @@ Description
     D/2 within 0.1%); the frame agrees with the mesh motion (riser frame:
     static mesh; lab frame with a moving riser: a dynamic mesh).
 
-    Which frame: measured on the flagship (11,520-cell O-grid, dt = 5e-4 s,
-    one particle, 5 periods), the lab frame's moving mesh costs 78 s and the
-    riser frame 3.2 s, 25 times less, for lifting distances that differ by
-    0.15% (first order in dt, tested). A rigid riser is best run in the
+    Which frame: on the flagship the lab frame's moving mesh costs some 25
+    times more than the riser frame (benchmarks/README.md), for lifting
+    distances that agree to first order in dt (tested). A rigid riser is best run in the
     riser frame; the lab frame (moving mesh and wall) is the general path
     for what moves otherwise.
 

@@ -67,7 +67,7 @@ def make_case(case, box, cells, cyclic_x, sigma_at, TL, releases, deltaT, endTim
         + "blocks (hex (0 1 2 3 4 5 6 7) (%d %d %d) simpleGrading (1 1 1));\n" % (nx, ny, nz)
         + "boundary\n(\n%s);\n" % boundary)
     ff.write_dictionary(case + "/system/controlDict", (
-        "application uncoupledKinematicParcelFoam;\nlibs (\"libriserLagrangian.so\");\n"
+        "application uncoupledKinematicParcelFoam;\nlibs (\"libriserStockClouds.so\");\n"
         "startFrom startTime;\nstartTime 0;\nstopAt endTime;\nendTime %g;\ndeltaT %g;\n"
         "writeControl adjustableRunTime;\nwriteInterval %g;\nwriteFormat ascii;\n"
         "writePrecision 12;\ntimeFormat general;\ntimePrecision 6;\nrunTimeModifiable no;\n"

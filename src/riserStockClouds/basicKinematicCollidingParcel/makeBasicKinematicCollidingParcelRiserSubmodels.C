@@ -8,7 +8,7 @@ Description
     stock colliding cloud basicKinematicCollidingCloud, so that
     icoUncoupledKinematicParcelFoam, icoUncoupledKinematicParcelDyMFoam,
     DPMFoam and DPMDyMFoam find them after
-    libs ("libriserLagrangian.so"); in system/controlDict.
+    libs ("libriserStockClouds.so"); in system/controlDict.
 
 \*---------------------------------------------------------------------------*/
 

@@ -5,7 +5,7 @@
 Description
     Registers the riser forces and the riser injection models for the stock MPPIC cloud
     basicKinematicMPPICCloud, so that MPPICFoam and MPPICDyMFoam find them
-    after libs ("libriserLagrangian.so"); in system/controlDict. The cloud
+    after libs ("libriserStockClouds.so"); in system/controlDict. The cloud
     does not collide: riserContact and riserParticleTable are not
     available for it (makeRiserSubmodels.H).
 

@@ -6,7 +6,7 @@ Description
     Registers the riser forces and the riser injection models for the stock kinematic cloud
     basicKinematicCloud, so that uncoupledKinematicParcelFoam and
     uncoupledKinematicParcelDyMFoam find them after
-    libs ("libriserLagrangian.so"); in system/controlDict. The cloud does
+    libs ("libriserStockClouds.so"); in system/controlDict. The cloud does
     not collide: riserContact and riserParticleTable are not available
     for it (makeRiserSubmodels.H).
 
