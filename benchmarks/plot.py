@@ -219,8 +219,10 @@ def summary(res, a):
                   "| %d particles, none near the wall | %s | 1 |" % (c["N"], ms(c["cpuPerStep"]["offWall"])),
                   "| the same + 1 particle at the wall | %s | %s |" % (
                       ms(c["cpuPerStep"]["nearWall"]), c["subCyclesPerStep"]), "",
-                  "One particle at the wall makes every particle's step %.0f times as expensive: "
-                  "the colliding cloud moves the whole cloud in every collision sub-cycle." % c["ratio"], ""]
+                  "The cloud's step with one particle at the wall costs %.2f times the step without: "
+                  "only the particle at the wall is sub-cycled (riserContact's local sub-cycling; "
+                  "a ratio near the sub-cycles per step would mean the whole cloud moved in each)."
+                  % c["ratio"], ""]
     extra = res.get("extra", {})
     if "pairCollision" in extra:
         e = extra["pairCollision"]
@@ -234,31 +236,6 @@ def summary(res, a):
         for k in ("stockDyMPair", "riserLab"):
             if k in v:
                 lines.append("| %s | %.3f |" % (v[k]["label"], v[k]["cpuPerStep"]))
-        lines.append("")
-    if "beforeFix" in extra:
-        b = extra["beforeFix"]
-        ab = analyse(b)
-        lines += ["## Before and after the profile's fix", "",
-                  "The tree's build measured above includes the four changes proposed in "
-                  "`benchmarks/profile.txt` (commit ec4f1d0, applied to the tree at 23:09 UTC). "
-                  "The same suites with a private build of the sources as they "
-                  "were before (%s; [before-fix/summary.md](before-fix/summary.md)):" % b["machine"]["date"], "",
-                  "| suite | solver and models | t(1) ms/step before | after | ratio to stock before | after | target |",
-                  "|---|---|---:|---:|---:|---:|---:|"]
-        for suite in ("stock", "riserFrame"):
-            if suite in a and suite in ab:
-                after = {r["key"]: r for r in a[suite]}
-                for r in ab[suite]:
-                    if not r["key"].startswith("riser") or r["key"] not in after:
-                        continue
-                    q = after[r["key"]]
-                    lines.append("| %s | %s | %s | %s | %.2f | %.2f | %s |" % (
-                        "moving mesh" if suite == "stock" else "static mesh", r["label"],
-                        ms(r["t1"]), ms(q["t1"]), r["ratio"], q["ratio"],
-                        "<= %.1f" % q["target"] if q.get("target") else ""))
-        if "contact" in b["suites"] and "contact" in res["suites"]:
-            lines.append("| static mesh | 1 particle at the wall: step cost ratio | | | %.0fx | %.0fx | |" % (
-                b["suites"]["contact"]["ratio"], res["suites"]["contact"]["ratio"]))
         lines.append("")
     if res.get("note"):
         lines += ["Note: %s." % res["note"], ""]
@@ -412,7 +389,7 @@ def main():
     res = json.load(open(os.path.join(folder, "results.json")))
     # measurements made separately, in sub-folders of the results
     res["extra"] = {}
-    for name, sub in (("pairCollision", "pairCollision"), ("beforeFix", "before-fix")):
+    for name, sub in (("pairCollision", "pairCollision"),):
         path = os.path.join(folder, sub, "results.json")
         if os.path.isfile(path) and os.path.abspath(folder) != os.path.abspath(os.path.dirname(path)):
             res["extra"][name] = json.load(open(path))
