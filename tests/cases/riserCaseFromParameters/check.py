@@ -1,0 +1,109 @@
+"""A riser case from its physical parameters; see run."""
+import math
+import os
+import re
+import subprocess
+import sys
+
+from riserfoam import foamfields as ff
+from riserfoam.checks import Checks
+
+root, work = sys.argv[1], sys.argv[2]
+riser_case = os.path.join(root, "bin", "riserCase")
+checks = Checks()
+
+D, L, A, f, ub, dmin, dmax, rmin, rmax, N = 0.08, 0.4, 0.05, 2.0, 0.6, 0.006, 0.01, 2500.0, 3500.0, 60
+case = os.path.join(work, "myRiser")
+subprocess.run([riser_case, case, "-D", repr(D), "-L", repr(L), "-A", repr(A), "-f", repr(f),
+                "-uBulk", repr(ub), "-dMin", repr(dmin), "-dMax", repr(dmax),
+                "-rhoMin", repr(rmin), "-rhoMax", repr(rmax), "-N", str(N),
+                "-periods", "1", "-n", "6"], check=True)
+run = subprocess.run([os.path.join(case, "Allrun")], stdout=subprocess.PIPE,
+                     stderr=subprocess.STDOUT, text=True)
+print(run.stdout.strip())
+if run.returncode != 0:
+    print("FAILED: the case's Allrun exited with %d" % run.returncode)
+    checks.failures += 1
+    checks.exit()
+
+log = open(os.path.join(case, "log.riserParcelFoam")).read()
+if not log.rstrip().endswith("End") or not os.path.isdir(os.path.join(case, "0.5")):
+    print("FAILED: the run did not reach the end of its period, 0.5 s")
+    checks.failures += 1
+
+# the given values, as the case holds them (exact: written from them)
+riser = os.path.join(case, "constant", "riserProperties")
+cloud = os.path.join(case, "constant", "kinematicCloudProperties")
+for name, expected in (("D", D), ("uCentre", 2 * ub), ("A", A), ("f", f)):
+    value = ff.read_entry(riser, name)
+    checks.near("riserProperties %s" % name, value, expected, 1e-12)
+drag = subprocess.run(["foamDictionary", "-entry",
+                       "subModels/particleForces/wallCorrectedDrag/pipeDiameter", "-value", cloud],
+                      stdout=subprocess.PIPE, text=True, check=True).stdout
+checks.near("wallCorrectedDrag pipeDiameter", float(drag), D, 1e-12)
+
+# the fill: C_v of 60 ores of mean volume <pi d^3/6> (d uniform) in pi D^2/4 L,
+# achieved within half the largest ore's volume over the section's volume
+mean_volume = math.pi / 6 * (dmax ** 4 - dmin ** 4) / (4 * (dmax - dmin))
+cv = N * mean_volume / (math.pi * D ** 2 / 4 * L)
+m = re.search(r"riserFill: placed (\d+) ores, solids fraction C_v = (\S+) \(requested (\S+)\)"
+              r".* volume (\S+) m\^3", log)
+placed, achieved, requested, volume = int(m.group(1)), float(m.group(2)), float(m.group(3)), float(m.group(4))
+# the log prints the requested fraction to 6 significant digits at least
+checks.near("requested C_v", requested, cv, 1e-5)
+bound = math.pi * dmax ** 3 / 12 / volume
+checks.near("achieved C_v (tolerance: the fill's bound)", achieved, requested, bound, scale=1.0)
+
+final = os.path.join(case, "0.5", "lagrangian", "kinematicCloud")
+d = ff.read_scalars(os.path.join(final, "d"))
+rho = ff.read_scalars(os.path.join(final, "rho"))
+checks.near("ores at the end of the period", len(d), placed, 0.5, scale=1.0)
+inside = all(dmin <= x <= dmax for x in d) and all(rmin <= x <= rmax for x in rho)
+print("diameters in [%g, %g]: %g..%g; densities in [%g, %g]: %g..%g: %s"
+      % (dmin, dmax, min(d), max(d), rmin, rmax, min(rho), max(rho), "ok" if inside else "FAILED"))
+checks.failures += not inside
+
+# the contact choices, in the dictionaries written
+for contacts, model, pairs in (("wall", "riserContact", False), ("none", "none", False),
+                               ("pairs", "riserContact", True)):
+    other = os.path.join(work, "contacts_" + contacts)
+    subprocess.run([riser_case, other, "-contacts", contacts], check=True, stdout=subprocess.DEVNULL)
+    text = open(os.path.join(other, "constant", "kinematicCloudProperties")).read()
+    got_model = re.search(r"\bcollisionModel\s+(\w+);", text).group(1)
+    got_pairs = re.search(r"\bpairs\s*\{", text) is not None
+    ok = got_model == model and got_pairs == pairs
+    print("-contacts %-5s: collisionModel %s, pairs %s: %s" % (contacts, got_model, got_pairs,
+                                                              "ok" if ok else "FAILED"))
+    checks.failures += not ok
+
+# hostile input: stops, naming the option
+for args, named in (
+        (["-D", "-0.1"], "-D"),
+        (["-D", "nan"], "-D"),
+        (["-d", "0.06"], "-d"),
+        (["-d", "0.01", "-dMin", "0.005", "-dMax", "0.01"], "-d"),
+        (["-dMin", "0.01"], "-dMax"),
+        (["-dMin", "0.01", "-dMax", "0.005"], "-dMin"),
+        (["-rhoMin", "3000", "-rhoMax", "2000"], "-rhoMin"),
+        (["-rho", "-5"], "-rho"),
+        (["-Cv", "0.03", "-N", "10"], "-N"),
+        (["-Cv", "0.5"], "-Cv"),
+        (["-N", "100000"], "-N"),
+        (["-n", "5"], "-n"),
+        (["-periods", "0"], "-periods"),
+        (["-L", "0.01"], "-d"),
+        (["-contacts", "wet"], "-contacts"),
+        (["-uBulkk", "1"], "-uBulkk"),
+        (["-period", "2"], "-period")):
+    bad = subprocess.run([riser_case, os.path.join(work, "bad")] + args,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    ok = bad.returncode != 0 and named in bad.stdout and not os.path.exists(os.path.join(work, "bad"))
+    print("riserCase %-40s stops naming %-9s: %s" % (" ".join(args), named, "ok" if ok else "FAILED"))
+    if not ok:
+        print(bad.stdout)
+    checks.failures += not ok
+existing = subprocess.run([riser_case, case], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+ok = existing.returncode != 0 and "exists" in existing.stdout
+print("riserCase into an existing folder stops: %s" % ("ok" if ok else "FAILED"))
+checks.failures += not ok
+checks.exit()
