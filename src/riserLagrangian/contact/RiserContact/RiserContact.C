@@ -266,15 +266,6 @@ void Foam::RiserContact<CloudType>::checkCloudRunsThis() const
             << " without the mesh; remove it or set tracked"
             << exit(FatalIOError);
     }
-    if (pairLaw_.valid() && Pstream::parRun() && !riserCloud)
-    {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "entry 'pairs' (particle-particle contact) in a parallel run"
-            << " of a stock colliding cloud: across processor boundaries"
-            << " pairs are handled by the riser cloud (riserParcelFoam)"
-            << " only; run serially or with riserParcelFoam"
-            << exit(FatalIOError);
-    }
 }
 
 
@@ -364,69 +355,128 @@ template<class CloudType>
 void Foam::RiserContact<CloudType>::collidePairs()
 {
     const scalar dt = this->owner().mesh().time().deltaTValue();
+    const scalar period = riser_.section().period();
 
+    // this processor's particles, then, in parallel, copies of the other
+    // processors' particles near the box of its own (nearProcessors: their
+    // state only, none of their springs); a pair across a processor
+    // boundary is evaluated alike on both processors (the particle of the
+    // lower key first), each keeping its own particle's spring and force
     std::vector<parcelType*> parcels;
-    std::vector<riser::Vector> x;
-    parcels.reserve(this->owner().size());
-    x.reserve(this->owner().size());
+    DynamicList<grainState> bodies(this->owner().size());
     scalar rMax = 0;
     for (parcelType& p : this->owner())
     {
         parcels.push_back(&p);
-        x.push_back(toCore(p.position()));
-        rMax = max(rMax, 0.5*p.d());
+        grainState m;
+        m.key = labelPair(p.origProc(), p.origId());
+        m.processor = Pstream::myProcNo();
+        m.x = p.position();
+        m.U = p.U();
+        m.omega = rotation_ ? p.omega() : vector::zero;
+        m.R = 0.5*p.d();
+        m.mEff = effectiveMass(p);
+        bodies.append(m);
+        rMax = max(rMax, m.R);
     }
-    if (parcels.size() < 2)
+    const label nOwn = parcels.size();
+    if (Pstream::parRun())
+    {
+        reduce(rMax, maxOp<scalar>());
+        List<vector> x(nOwn);
+        forAll(x, i)
+        {
+            x[i] = bodies[i].x;
+        }
+        const labelListList send = nearProcessors(x, 2*rMax + SMALL, period);
+        std::size_t bytesSent = 0;
+        for (const List<grainState>& g : exchanged(send, bodies, bytesSent))
+        {
+            bodies.append(g);
+        }
+    }
+    if (bodies.size() < 2)
     {
         return;
     }
 
-    forEachNearPair(x, 2*rMax, [&](std::size_t a, std::size_t b, scalar dz)
+    std::vector<riser::Vector> x(bodies.size());
+    forAll(bodies, i)
     {
+        x[i] = toCore(bodies[i].x);
+    }
+    forEachNearPair(x, 2*rMax, [&](std::size_t a, std::size_t b, scalar)
+    {
+        if (label(a) >= nOwn && label(b) >= nOwn)
+        {
+            return;
+        }
         // the pair in a fixed order, so that the spring is read in one frame
-        const bool aFirst =
-            labelPair(parcels[a]->origProc(), parcels[a]->origId())
-          < labelPair(parcels[b]->origProc(), parcels[b]->origId());
-        parcelType& p = aFirst ? *parcels[a] : *parcels[b];
-        parcelType& q = aFirst ? *parcels[b] : *parcels[a];
+        const bool aFirst = bodies[a].key < bodies[b].key;
+        const label i = aFirst ? a : b, j = aFirst ? b : a;
+        const grainState& p = bodies[i];
+        const grainState& q = bodies[j];
         // q's image nearest to p
-        const riser::Vector image(0, 0, aFirst ? dz : -dz);
-        const scalar Rp = 0.5*p.d(), Rq = 0.5*q.d();
+        const scalar dz = q.x.z() - p.x.z();
+        const riser::Vector image(0, 0, period > 0 ? -period*std::round(dz/period) : 0);
         const riser::PairGeometry geo =
-            riser::pairGeometry
-            (
-                toCore(p.position()), Rp, toCore(q.position()) + image, Rq
-            );
+            riser::pairGeometry(toCore(p.x), p.R, toCore(q.x) + image, q.R);
         if (geo.overlap <= 0)
         {
             return;
         }
-        // the spring in p's frame (n from p to q); q keeps its negative
-        vector& spring =
-            p.collisionRecords().matchPairRecord(q.origProc(), q.origId()).collisionData();
-        const scalar mp = effectiveMass(p), mq = effectiveMass(q);
+        // the spring in p's frame (n from p to q), kept by each particle of
+        // the pair this processor holds (q keeps its negative)
+        vector* springP =
+            i < nOwn
+          ? &parcels[i]->collisionRecords().matchPairRecord
+            (
+                q.key.first(), q.key.second()
+            ).collisionData()
+          : nullptr;
+        vector* springQ =
+            j < nOwn
+          ? &parcels[j]->collisionRecords().matchPairRecord
+            (
+                p.key.first(), p.key.second()
+            ).collisionData()
+          : nullptr;
+        const vector spring = springP ? *springP : -*springQ;
         const riser::ContactStep c =
             riser::stepContact
             (
-                *pairLaw_, riser::pairBody(Rp, mp, Rq, mq), geo.overlap, geo.normal,
-                contactSide(p), contactSide(q), toCore(spring),
+                *pairLaw_, riser::pairBody(p.R, p.mEff, q.R, q.mEff), geo.overlap,
+                geo.normal,
+                riser::ContactSide{toCore(p.U), toCore(p.omega), p.R},
+                riser::ContactSide{toCore(q.U), toCore(q.omega), q.R},
+                toCore(spring),
                 // (no approach speed kept: a wet pair law is refused here)
                 std::numeric_limits<scalar>::quiet_NaN(), dt
             );
-        spring = fromCore(c.law.springAfter);
-        q.collisionRecords().matchPairRecord(p.origProc(), p.origId()).collisionData() =
-            -spring;
-
+        const vector after = fromCore(c.law.springAfter);
         const vector F = fromCore(c.force);
         // each parcel divides f by its m_p: the force on m_p + C_A m_f
-        p.f() += (p.mass()/mp)*F;
-        q.f() -= (q.mass()/mq)*F;
-        if (rotation_)
+        if (springP)
         {
-            p.torque() += fromCore(c.torqueI);
-            q.torque() += fromCore(c.torqueJ);
+            parcelType& own = *parcels[i];
+            *springP = after;
+            own.f() += (own.mass()/p.mEff)*F;
+            if (rotation_)
+            {
+                own.torque() += fromCore(c.torqueI);
+            }
         }
-        ledger_.pairOverlap(geo.overlap/min(p.d(), q.d()));
+        if (springQ)
+        {
+            parcelType& own = *parcels[j];
+            *springQ = -after;
+            own.f() -= (own.mass()/q.mEff)*F;
+            if (rotation_)
+            {
+                own.torque() += fromCore(c.torqueJ);
+            }
+        }
+        ledger_.pairOverlap(geo.overlap/(2*min(p.R, q.R)));
     });
 }
 
