@@ -540,6 +540,26 @@ void Foam::RiserContact<CloudType>::collide()
     checkMeshUnchanged();
     const scalar axisOffset = mag(riser_.flow().motion().axisPosition(t));
 
+    // a stock parcel's wall contact in progress, kept here, follows the
+    // parcel to the processor it moved to
+    if (!riserCloud && wallLaw_.valid() && Pstream::parRun())
+    {
+        label held = 0;
+        for (const parcelType& p : this->owner())
+        {
+            held += ledger_.stockRecord(labelPair(p.origProc(), p.origId()), false) != nullptr;
+        }
+        if (returnReduce(ledger_.nStockRecords() - held, sumOp<label>()))
+        {
+            HashSet<labelPair, labelPairHash> own(2*this->owner().size());
+            for (const parcelType& p : this->owner())
+            {
+                own.insert(labelPair(p.origProc(), p.origId()));
+            }
+            ledger_.handOverStockRecords(own);
+        }
+    }
+
     for (parcelType& p : this->owner())
     {
         // no wall contact, or certainly apart from the wall and in no wall

@@ -151,6 +151,64 @@ void Foam::contactLedger::dropStockRecord(const labelPair& key)
 }
 
 
+void Foam::contactLedger::handOverStockRecords
+(
+    const HashSet<labelPair, labelPairHash>& own
+)
+{
+    // each processor's records of particles it no longer holds: key and
+    // the record's numbers
+    List<List<scalar>> leaving(Pstream::nProcs());
+    {
+        DynamicList<scalar> rows;
+        DynamicList<labelPair> gone;
+        forAllConstIters(stock_, iter)
+        {
+            if (own.found(iter.key()))
+            {
+                continue;
+            }
+            gone.append(iter.key());
+            const scalarList v = iter().numbers();
+            if (v.size())
+            {
+                rows.append(iter.key().first());
+                rows.append(iter.key().second());
+                rows.append(v);
+            }
+        }
+        for (const labelPair& key : gone)
+        {
+            stock_.erase(key);
+        }
+        leaving[Pstream::myProcNo()].transfer(rows);
+    }
+    riserCompatibility::allGatherList(leaving);
+
+    const label n = 2 + wallContactRecord::size;
+    forAll(leaving, proc)
+    {
+        const List<scalar>& rows = leaving[proc];
+        for (label r = 0; proc != Pstream::myProcNo() && r < rows.size(); r += n)
+        {
+            const labelPair key(label(rows[r]), label(rows[r + 1]));
+            if (own.found(key))
+            {
+                stock_.set
+                (
+                    key,
+                    wallContactRecord::fromNumbers
+                    (
+                        SubList<scalar>(rows, n - 2, r + 2),
+                        "the wall contact in progress handed over"
+                    )
+                );
+            }
+        }
+    }
+}
+
+
 void Foam::contactLedger::checkInside
 (
     const labelPair& key,
