@@ -581,11 +581,11 @@ def flagship_contact():
 
 
 
-def dense_shaken_section(case, end, write_interval=None, alone_at_wall="meshFree"):
+def dense_shaken_section(case, end, write_interval=None, alone_at_wall="meshFree", L=0.1):
     """The dense shaken periodic section of the contact tests, made in case
-    (nothing run): the flagship tutorial on a D = L = 0.1 m section
-    (riserMesh -n 6, cyclic ends) filled at C_v = 0.15 with 10 mm ores
-    (riserFill: 225), A = 0.2 m, f = 4 Hz from the largest acceleration
+    (nothing run): the flagship tutorial on a section of D = 0.1 m and
+    length L (riserMesh -n 6, cyclic ends) filled at C_v = 0.15 with 10 mm
+    ores (riserFill: 225 in L = 0.1 m), A = 0.2 m, f = 4 Hz from the largest acceleration
     (phi0 = pi/2); soft ores and wall (E = 1e7 Pa: a contact lasts a few
     flow steps, so that contacts are in progress at the steps' ends),
     pairs (e_n 0.5, e_t 0.5, mu 0.3), every contact sub-stepped without
@@ -595,7 +595,7 @@ def dense_shaken_section(case, end, write_interval=None, alone_at_wall="meshFree
     1e-4 s to end, written every write_interval (end by default) in ascii
     with 17 digits, no function objects."""
     copy_tutorial("riser/oscillatingContact", case)
-    riser_mesh(case, D=0.1, L=0.1, n=6)
+    riser_mesh(case, D=0.1, L=L, n=6)
     props = os.path.join(case, "constant", "riserProperties")
     ff.set_nested(props, "A", "0.2")
     ff.set_nested(props, "f", "4")
