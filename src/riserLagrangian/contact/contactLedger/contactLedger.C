@@ -169,7 +169,7 @@ void Foam::contactLedger::handOverStockRecords
                 continue;
             }
             gone.append(iter.key());
-            const scalarList v = iter().numbers();
+            const scalarList v = iter.val().numbers();
             if (v.size())
             {
                 rows.append(iter.key().first());
