@@ -417,30 +417,30 @@ void Foam::RiserContact<CloudType>::collidePairs()
         const grainState& p = bodies[i];
         const grainState& q = bodies[j];
         // q's image nearest to p
-        const scalar dz = q.x.z() - p.x.z();
-        const riser::Vector image(0, 0, period > 0 ? -period*std::round(dz/period) : 0);
+        const riser::Vector xp = toCore(p.x);
         const riser::PairGeometry geo =
-            riser::pairGeometry(toCore(p.x), p.R, toCore(q.x) + image, q.R);
+            riser::pairGeometry
+            (
+                xp, p.R, xp + riser::nearestImage(toCore(q.x) - xp, period), q.R
+            );
         if (geo.overlap <= 0)
         {
             return;
         }
         // the spring in p's frame (n from p to q), kept by each particle of
         // the pair this processor holds (q keeps its negative)
-        vector* springP =
-            i < nOwn
-          ? &parcels[i]->collisionRecords().matchPairRecord
-            (
-                q.key.first(), q.key.second()
-            ).collisionData()
-          : nullptr;
-        vector* springQ =
-            j < nOwn
-          ? &parcels[j]->collisionRecords().matchPairRecord
-            (
-                p.key.first(), p.key.second()
-            ).collisionData()
-          : nullptr;
+        auto springOf = [&](const label own, const grainState& other) -> vector*
+        {
+            return
+                own < nOwn
+              ? &parcels[own]->collisionRecords().matchPairRecord
+                (
+                    other.key.first(), other.key.second()
+                ).collisionData()
+              : nullptr;
+        };
+        vector* springP = springOf(i, q);
+        vector* springQ = springOf(j, p);
         const vector spring = springP ? *springP : -*springQ;
         const riser::ContactStep c =
             riser::stepContact
