@@ -88,10 +88,11 @@ def read_scalars(path, entry=None):
     return values
 
 
-def read_scalar_lists(path):
-    """The lists of a lagrangian field of scalar fields (one list per
-    particle, e.g. N ( n1 (a b ...) n2 (...) ... ), a list of size n
-    uniform as n{a}), as lists of floats."""
+def read_lists(path, width=1):
+    """The lists of a lagrangian field of fields (one list per particle,
+    e.g. N ( n1 (a b ...) n2 (...) ... ), a list of size n uniform as
+    n{a}): lists of floats (width 1: scalars, labels) or of tuples of width
+    floats (vectors: width 3)."""
     tokens = re.findall(r"[(){}]|[^\s(){}]+", _body(path))
     k = 0
 
@@ -99,6 +100,16 @@ def read_scalar_lists(path):
         nonlocal k
         k += 1
         return tokens[k - 1]
+
+    def item():
+        if width == 1:
+            return float(take())
+        if take() != "(":
+            raise ValueError("%s: a value of %d numbers expected" % (path, width))
+        value = tuple(float(take()) for _ in range(width))
+        if take() != ")":
+            raise ValueError("%s: a value of %d numbers expected" % (path, width))
+        return value
 
     count = int(take())
     if take() != "(":
@@ -108,12 +119,12 @@ def read_scalar_lists(path):
         n = int(take())
         bracket = take()
         if bracket == "{":
-            lists.append([float(take())] * n)
+            lists.append([item()] * n)
             take()
             continue
         values = []
         while tokens[k] != ")":
-            values.append(float(take()))
+            values.append(item())
         take()
         if len(values) != n:
             raise ValueError("%s: a list of %d values says %d" % (path, len(values), n))

@@ -98,41 +98,6 @@ def solve(case, split, end, expected=None):
     return log
 
 
-def lists(path, width):
-    """a lagrangian field of lists (one per particle) of scalars (width 1)
-    or vectors (width 3): a list of lists of tuples"""
-    tokens = re.findall(r"[(){}]|[^\s(){}]+", ff._body(path))
-    k = 0
-
-    def take():
-        nonlocal k
-        k += 1
-        return tokens[k - 1]
-
-    def item():
-        if width == 1:
-            return (float(take()),)
-        assert take() == "("
-        v = tuple(float(take()) for _ in range(width))
-        assert take() == ")"
-        return v
-
-    out = []
-    count = int(take())
-    assert take() == "("
-    for _ in range(count):
-        n = int(take())
-        bracket = take()
-        if bracket == "{":
-            v = item()
-            take()
-            out.append([v] * n)
-            continue
-        out.append([item() for _ in range(n)])
-        assert take() == ")"
-    return out
-
-
 def keys(folder):
     return list(zip((int(v) for v in ff.read_scalars(os.path.join(folder, "origProcId"))),
                     (int(v) for v in ff.read_scalars(os.path.join(folder, "origId")))))
@@ -152,13 +117,13 @@ def state(case, t):
     x = ff.read_vectors(os.path.join(folder, "positions"))
     U = ff.read_vectors(os.path.join(folder, "U"))
     spin = ff.read_vectors(os.path.join(folder, "angularMomentum"))
-    springs = lists(os.path.join(folder, "collisionRecordsPairData"), 3)
-    otherProc = lists(os.path.join(folder, "collisionRecordsPairOrigProcOfOther"), 1)
-    otherId = lists(os.path.join(folder, "collisionRecordsPairOrigIdOfOther"), 1)
-    wall = lists(os.path.join(folder, "collisionRecordsWallData"), 3)
+    springs = ff.read_lists(os.path.join(folder, "collisionRecordsPairData"), 3)
+    otherProc = ff.read_lists(os.path.join(folder, "collisionRecordsPairOrigProcOfOther"))
+    otherId = ff.read_lists(os.path.join(folder, "collisionRecordsPairOrigIdOfOther"))
+    wall = ff.read_lists(os.path.join(folder, "collisionRecordsWallData"), 3)
     ores = {}
     for i, key in enumerate(keys(folder)):
-        pairs = {(int(p[0]), int(q[0])): s for p, q, s in zip(otherProc[i], otherId[i], springs[i])}
+        pairs = {(int(p), int(q)): s for p, q, s in zip(otherProc[i], otherId[i], springs[i])}
         ores[key] = dict(x=x[i], U=U[i], spin=spin[i], pairs=pairs, wall=wall[i])
     return ores
 
