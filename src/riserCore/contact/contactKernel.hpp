@@ -24,6 +24,24 @@
 //   E_el  = 2/5 k_n delta_n^(5/2) + 1/2 k_t |s|^2 (energy in the springs,
 //           elasticEnergy, for a caller that tallies it)
 //
+// Lubricated (the law's film(), contact/lubrication.hpp): the film acts
+// along n at a gap h = -overlap below its cut-off. Over a step it gives
+// the impulse of the gap's change in the step, which does not depend on
+// the speed along the way (lubrication.hpp), with the gap the step ends at
+// as the caller's position update (symplectic Euler: the velocity after
+// the step) will make it:
+//
+//   J = 6 pi mu R*^2 [G(h1) - G(h)],   h1 = h - (u + J/M) dt,
+//
+// u the normal approach speed the step would end with without the film
+// (U.n apart; U.n + dt F.n/M with the contact force F of a step that
+// starts in contact and may leave it), M the body's inertia. J is solved
+// for (Newton's method, kept in its bracket): it lies between 0 and -M u,
+// so a film slows the relative normal motion and never reverses it, at
+// any step. The force is J/dt n; dt = 0 evaluates the film's force at h
+// instead, -6 pi mu R*^2 g(h) (U.n) n. The film has no spring and no
+// torque; its power F.U is dissipated.
+//
 // vIn is the contact's normal approach speed at its start (U.n at its first
 // evaluation), which a wet law's damping depends on (contact/
 // wetRestitution.hpp); a dry law ignores it.
@@ -40,6 +58,7 @@
 #define RISERCORE_CONTACT_CONTACTKERNEL_HPP
 
 #include "contact/hertzMindlin.hpp"
+#include "contact/lubrication.hpp"
 
 #include <cmath>
 
@@ -83,6 +102,49 @@ inline double elasticEnergy(const HertzMindlin& law, const ContactBody& b,
     return 0.4*law.normalStiffness(b)*delta*delta*std::sqrt(delta) + 0.5*kt*s.squaredNorm();
 }
 
+//- The film's impulse along n over a step dt > 0 from gap h (< 0: an
+//  overlap), u the normal approach speed the step would end with without
+//  it (see above), body the equivalent R and M
+inline double filmImpulse(const LubricationFilm& film, const ContactBody& body,
+                          double gap, double u, double dt)
+{
+    const double R = body.radius, M = body.mass;
+    if (u == 0.0) return 0.0;
+    double lo = std::min(0.0, -M*u), hi = std::max(0.0, -M*u);
+    // f(J) = J - 6 pi mu R^2 [G(h - (u + J/M) dt) - G(h)]: increasing in
+    // J, negative at the bracket's lower end, positive at its upper one
+    auto f = [&](double J) { return J - film.impulse(R, gap, gap - (u + J/M)*dt); };
+    if (f(0.0) == 0.0) return 0.0;
+    const double tol = 1e-13*M*std::abs(u);
+    double J = 0.0;
+    for (int k = 0; k < 200; ++k)
+    {
+        const double fJ = f(J);
+        (fJ > 0.0 ? hi : lo) = J;
+        const double slope =
+            1.0 + film.coefficient(R)*film.weight(R, gap - (u + J/M)*dt)*dt/M;
+        double next = J - fJ/slope;
+        if (!(next > lo && next < hi)) next = 0.5*(lo + hi);
+        const bool done = std::abs(next - J) <= tol || hi - lo <= tol;
+        J = next;
+        if (done) break;
+    }
+    return J;
+}
+
+//- The film's force on i at gap h along n over a step dt (dt = 0: at h),
+//  body the equivalent R and M, U i's contact point relative to the other
+//  side's
+inline Vector filmForce(const LubricationFilm& film, const ContactBody& body,
+                        double gap, const Vector& n, const Vector& U, double dt)
+{
+    if (dt == 0.0)
+    {
+        return -film.coefficient(body.radius)*film.weight(body.radius, gap)*U.dot(n)*n;
+    }
+    return (filmImpulse(film, body, gap, U.dot(n), dt)/dt)*n;
+}
+
 //- What one step of a contact gives
 struct ContactStep
 {
@@ -95,7 +157,8 @@ struct ContactStep
 };
 
 //- One contact over a step dt: sides i and j with overlap along n (from i
-//  towards j; apart, overlap <= 0: all zero), body the equivalent R and M
+//  towards j; apart, overlap <= 0: the film's force if lubricated, else
+//  all zero), body the equivalent R and M
 //  the law sees, kept the spring the contact kept from its previous step,
 //  vIn its normal approach speed at its start
 inline ContactStep stepContact(const HertzMindlin& law, const ContactBody& body,
@@ -108,15 +171,24 @@ inline ContactStep stepContact(const HertzMindlin& law, const ContactBody& body,
     c.U = contactVelocity(i, j, n);
     if (overlap <= 0.0)
     {
-        // apart: no force, no spring kept
+        // apart: no spring kept; the film's force only, if lubricated
         c.law = ContactForce{Vector::Zero(), Vector::Zero(), Vector::Zero(), false};
-        c.force = c.torqueI = c.torqueJ = Vector::Zero();
-        c.power = 0.0;
+        c.force = law.film()
+                ? filmForce(*law.film(), body, -overlap, n, c.U, dt)
+                : Vector(Vector::Zero());
+        c.torqueI = c.torqueJ = Vector::Zero();
+        c.power = c.force.dot(c.U);
         return c;
     }
     const Vector Ut = c.U - c.U.dot(n)*n;
     c.law = law.force(body, overlap, n, c.U, turnedSpring(kept, n) + dt*Ut, vIn);
     c.force = c.law.normal + c.law.tangential;
+    if (law.film() && dt > 0.0)
+    {
+        // the film of a step that leaves the contact
+        const double u = c.U.dot(n) + dt*c.force.dot(n)/body.mass;
+        c.force += (filmImpulse(*law.film(), body, -overlap, u, dt)/dt)*n;
+    }
     c.torqueI = (i.radius*n).cross(c.law.tangential);
     c.torqueJ = (j.radius*n).cross(c.law.tangential);
     c.power = c.force.dot(c.U);

@@ -38,10 +38,16 @@
 // (a contact whose approach speed is not known is an error, not a dry one).
 // Needs tensionAllowed (e = 0 has no finite damping ratio otherwise).
 //
+// Or lubricated (optional, lubrication.hpp): the law keeps its dry damping
+// and the liquid film acts before and after the contact (contactKernel.hpp
+// steps it), so that e(St) comes out of the dynamics. One contact is wet
+// one way or the other, not both.
+//
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_CONTACT_HERTZMINDLIN_HPP
 #define RISERCORE_CONTACT_HERTZMINDLIN_HPP
 
+#include "contact/lubrication.hpp"
 #include "contact/restitution.hpp"
 #include "contact/wetRestitution.hpp"
 
@@ -99,6 +105,7 @@ struct HertzMindlinParameters
     double friction;        //!< Coulomb coefficient mu_c >= 0
     NormalForceFloor floor = NormalForceFloor::tensionAllowed;
     std::optional<WetRestitution> wet = std::nullopt;  //!< in a liquid: e(St)
+    std::optional<LubricationFilm> film = std::nullopt; //!< in a liquid: its film
 };
 
 //- The particle in contact: R_eq = R_p and M_eq against the wall, M_eq the
@@ -139,7 +146,8 @@ public:
         friction_(p.friction),
         floor_(p.floor),
         eDry_(p.normalRestitution),
-        wet_(p.wet)
+        wet_(p.wet),
+        film_(p.film)
     {
         requireNonNegative("riser::HertzMindlin", "mu_c", p.friction);
         if (wet_)
@@ -155,6 +163,19 @@ public:
                 );
             }
         }
+        if (film_)
+        {
+            film_->check();
+            if (wet_)
+            {
+                throw std::invalid_argument
+                (
+                    "riser::HertzMindlin: a contact is wet by its restitution"
+                    " e(St) or by its lubrication film, not both (the film"
+                    " would take the liquid's loss a second time)"
+                );
+            }
+        }
     }
 
     double equivalentYoungModulus() const { return Eeq_; }
@@ -164,6 +185,12 @@ public:
 
     //- In a liquid (wet)?
     const std::optional<WetRestitution>& wet() const { return wet_; }
+
+    //- The liquid film before and after a contact (lubricated)?
+    const std::optional<LubricationFilm>& film() const { return film_; }
+
+    //- The dry restitution e_n
+    double dryRestitution() const { return eDry_; }
 
     //- The normal damping ratio of a contact of body b that began with
     //  normal approach speed vIn (towards the wall or the other body): the
@@ -251,6 +278,7 @@ private:
     NormalForceFloor floor_;
     double eDry_;
     std::optional<WetRestitution> wet_;
+    std::optional<LubricationFilm> film_;
 };
 
 } // namespace riser
