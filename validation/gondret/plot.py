@@ -1,5 +1,6 @@
 """Plot the Gondret bounce (gondret's curves and the digitized experiment):
-gap h(t) and velocity v(t), with and without the Basset force, and wet.
+gap h(t) and velocity v(t), with and without the Basset force, wet by the
+restitution e(St) and wet by the lubrication film.
 
 usage: plot.py <results folder> <experiment csv> <output png>
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -28,7 +29,9 @@ fig, (a1, a2) = plt.subplots(2, 1, figsize=(8, 7.5), sharex=True)
 styles = [("curve_basset.dat", "model, with Basset (C_H = 6)", "C0", "-"),
           ("curve_noBasset.dat", "model, without Basset", "C3", "--"),
           ("curve_wet.dat", "model, with Basset, wet restitution e_dry exp(-35/St)", "C2", "-."),
-          ("curve_wetNoBasset.dat", "model, without Basset, wet restitution", "C1", ":")]
+          ("curve_wetNoBasset.dat", "model, without Basset, wet restitution", "C1", ":"),
+          ("curve_film.dat", "model, with Basset, lubrication film (defaults)", "C4", "-"),
+          ("curve_filmNoBasset.dat", "model, without Basset, lubrication film", "C5", "--")]
 for name, label, color, ls in styles:
     t, h, v = np.loadtxt("%s/%s" % (folder, name), unpack=True)
     a1.plot(t, h * 1e3, ls, color=color, lw=1.4, label=label)
@@ -40,7 +43,7 @@ a2.plot(tm_e[keep], v_e[keep], "o", ms=3.5, mfc="none", color="k",
 a1.set_ylabel("gap h [mm]")
 a1.set_ylim(-0.5, 13.5)
 a1.set_title("steel sphere d = 3 mm in silicone oil on glass, St = 152: released 1 m above the wall,\n"
-              "Hertz-Mindlin e_dry = 0.97 (dry) or e(St) (wet), no lubrication", fontsize=10)
+              "Hertz-Mindlin e_dry = 0.97 (dry), e(St) (wet) or e_dry behind the lubrication film", fontsize=10)
 a1.legend(fontsize=8)
 a1.grid(alpha=0.3)
 a2.axhline(0.0, color="k", lw=0.6)

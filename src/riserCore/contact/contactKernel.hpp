@@ -25,22 +25,29 @@
 //           elasticEnergy, for a caller that tallies it)
 //
 // Lubricated (the law's film(), contact/lubrication.hpp): the film acts
-// along n at a gap h = -overlap below its cut-off. Over a step it gives
-// the impulse of the gap's change in the step, which does not depend on
-// the speed along the way (lubrication.hpp), with the gap the step ends at
-// as the caller's position update (symplectic Euler: the velocity after
-// the step) will make it:
+// along n at a gap h = -overlap below its cut-off. Its impulse between two
+// gaps does not depend on the speed along the way (lubrication.hpp), so
+// the kernel gives each evaluation the film's impulse over the gaps the
+// evaluation's force acts across. Every stepped caller is of the velocity
+// Verlet kind (the colliding cloud's half kicks around its move, the
+// grain engine, the trapezoid of a history stepper): the force evaluated
+// at gap h with the velocity u = U.n of the half step behind acts half
+// behind and half ahead, from the middle of the last move, h + u dt/2, to
+// the middle of the next, h - u' dt/2, with u' = u + J/M the half step's
+// speed ahead that the impulse J itself sets:
 //
-//   J = 6 pi mu R*^2 [G(h1) - G(h)],   h1 = h - (u + J/M) dt,
+//   J = 6 pi mu R*^2 [G(h - (u + J/M) dt/2) - G(h + u dt/2)],
 //
-// u the normal approach speed the step would end with without the film
-// (U.n apart; U.n + dt F.n/M with the contact force F of a step that
-// starts in contact and may leave it), M the body's inertia. J is solved
-// for (Newton's method, kept in its bracket): it lies between 0 and -M u,
-// so a film slows the relative normal motion and never reverses it, at
-// any step. The force is J/dt n; dt = 0 evaluates the film's force at h
-// instead, -6 pi mu R*^2 g(h) (U.n) n. The film has no spring and no
-// torque; its power F.U is dissipated.
+// so that consecutive evaluations' intervals join exactly and their
+// impulses add up to the film's whole, whatever the step (at a constant
+// step; a caller that changes its step there loses part of one
+// evaluation's impulse). M is the body's inertia; in a step that starts in
+// contact (and may leave it) u' = U.n + dt F.n/M + J/M with the contact's
+// force F. J is solved for (Newton's method, kept in its bracket) between
+// 0 and the impulse -M (u' - J/M) that stops the relative normal motion,
+// so the film slows it and never reverses it. The force is J/dt n; dt = 0
+// evaluates the film's force at h instead, -6 pi mu R*^2 g(h) (U.n) n.
+// The film has no spring and no torque; its power F.U is dissipated.
 //
 // vIn is the contact's normal approach speed at its start (U.n at its first
 // evaluation), which a wet law's damping depends on (contact/
@@ -102,27 +109,33 @@ inline double elasticEnergy(const HertzMindlin& law, const ContactBody& b,
     return 0.4*law.normalStiffness(b)*delta*delta*std::sqrt(delta) + 0.5*kt*s.squaredNorm();
 }
 
-//- The film's impulse along n over a step dt > 0 from gap h (< 0: an
-//  overlap), u the normal approach speed the step would end with without
-//  it (see above), body the equivalent R and M
+//- The film's impulse along n of an evaluation at gap h (< 0: an
+//  overlap) over a step dt > 0 (see above): u the normal approach speed of
+//  the half step behind, uAhead that of the half step ahead without the
+//  film, body the equivalent R and M
 inline double filmImpulse(const LubricationFilm& film, const ContactBody& body,
-                          double gap, double u, double dt)
+                          double gap, double u, double uAhead, double dt)
 {
     const double R = body.radius, M = body.mass;
-    if (u == 0.0) return 0.0;
-    double lo = std::min(0.0, -M*u), hi = std::max(0.0, -M*u);
-    // f(J) = J - 6 pi mu R^2 [G(h - (u + J/M) dt) - G(h)]: increasing in
-    // J, negative at the bracket's lower end, positive at its upper one
-    auto f = [&](double J) { return J - film.impulse(R, gap, gap - (u + J/M)*dt); };
-    if (f(0.0) == 0.0) return 0.0;
-    const double tol = 1e-13*M*std::abs(u);
-    double J = 0.0;
+    const double upper = gap + 0.5*u*dt;
+    auto lower = [&](double J) { return gap - 0.5*(uAhead + J/M)*dt; };
+    // f(J) = J - 6 pi mu R^2 [G(lower(J)) - G(upper)], increasing in J
+    auto f = [&](double J) { return J - film.impulse(R, upper, lower(J)); };
+    const double stop = -M*uAhead;
+    const double lo0 = std::min(0.0, stop), hi0 = std::max(0.0, stop);
+    if (lo0 == hi0) return 0.0;
+    // the root, or the end of the bracket it lies beyond
+    if (f(lo0) >= 0.0) return lo0;
+    if (f(hi0) <= 0.0) return hi0;
+    double lo = lo0, hi = hi0;
+    const double tol = 1e-13*(hi0 - lo0);
+    double J = 0.5*(lo + hi);
     for (int k = 0; k < 200; ++k)
     {
         const double fJ = f(J);
         (fJ > 0.0 ? hi : lo) = J;
         const double slope =
-            1.0 + film.coefficient(R)*film.weight(R, gap - (u + J/M)*dt)*dt/M;
+            1.0 + 0.5*film.coefficient(R)*film.weight(R, lower(J))*dt/M;
         double next = J - fJ/slope;
         if (!(next > lo && next < hi)) next = 0.5*(lo + hi);
         const bool done = std::abs(next - J) <= tol || hi - lo <= tol;
@@ -142,7 +155,7 @@ inline Vector filmForce(const LubricationFilm& film, const ContactBody& body,
     {
         return -film.coefficient(body.radius)*film.weight(body.radius, gap)*U.dot(n)*n;
     }
-    return (filmImpulse(film, body, gap, U.dot(n), dt)/dt)*n;
+    return (filmImpulse(film, body, gap, U.dot(n), U.dot(n), dt)/dt)*n;
 }
 
 //- What one step of a contact gives
@@ -186,8 +199,14 @@ inline ContactStep stepContact(const HertzMindlin& law, const ContactBody& body,
     if (law.film() && dt > 0.0)
     {
         // the film of a step that leaves the contact
-        const double u = c.U.dot(n) + dt*c.force.dot(n)/body.mass;
-        c.force += (filmImpulse(*law.film(), body, -overlap, u, dt)/dt)*n;
+        const double Un = c.U.dot(n);
+        c.force +=
+            (
+                filmImpulse
+                (
+                    *law.film(), body, -overlap, Un, Un + dt*c.force.dot(n)/body.mass, dt
+                )/dt
+            )*n;
     }
     c.torqueI = (i.radius*n).cross(c.law.tangential);
     c.torqueJ = (j.radius*n).cross(c.law.tangential);

@@ -64,6 +64,15 @@
 // start of its last one, U . n with n from i towards j at the first
 // evaluation that finds the overlap.
 //
+// Lubricated (a law with a film, contact/lubrication.hpp): a pair within
+// each other's film and a grain within a wall's get the film's force from
+// the contact kernel, its impulse over the step ahead (from the gap and the
+// velocities v(t + h/2)), which the two half kicks apply; the pair list
+// then reaches R_i + R_j + skin + h_cut of the pair. The film is not a
+// contact (no spring, no record, not counted in the contacts begun), and
+// its dissipation is tallied by the rectangle rule, -h F.U, so the energy
+// balance above holds for the contacts' part only.
+//
 // Handing over contacts in progress: the springs, and also each contact's
 // force at the last evaluation of the run handed over (the F_0 of the
 // first step's dE) and a pair's approach speed, when the caller kept them
@@ -634,7 +643,10 @@ private:
         ++builds_;
         if (!pairLaw_) return;  // no pair contact: no pairs to list
         if (n < 2 && preset_.empty() && list_.empty()) return;  // no pair
-        const double cutoff = 2.0*rMax + skinLength_;
+        // lubricated: a pair is listed while in each other's film too
+        // (R* of two radii up to R_max is at most R_max/2)
+        const double film = pairLaw_->film() ? pairLaw_->film()->cutoff : 0.0;
+        const double cutoff = 2.0*rMax + skinLength_ + 0.5*film*rMax;
         // the contacts in progress (those handed over not yet evaluated)
         std::unordered_map<std::uint64_t, Candidate> kept;
         for (const auto& p : preset_)
@@ -655,7 +667,8 @@ private:
 
         pairs_.forEachPair(positions_, cutoff, [&](std::size_t i, std::size_t j, double dz)
         {
-            const double reach = grains_[i].radius + grains_[j].radius + skinLength_;
+            const double Ri = grains_[i].radius, Rj = grains_[j].radius;
+            const double reach = Ri + Rj + skinLength_ + film*Ri*Rj/(Ri + Rj);
             if ((positions_[j] + Vector(0.0, 0.0, dz) - positions_[i]).squaredNorm() > reach*reach)
             {
                 return;
@@ -733,6 +746,19 @@ private:
                 cand.spring.setZero();
                 cand.force.setZero();
                 cand.approachSpeed = std::numeric_limits<double>::quiet_NaN();
+                if (pairLaw_->film())
+                {
+                    // in each other's film (lubricated): its force, not a
+                    // contact (its dissipation by the rectangle rule)
+                    const ContactStep c = stepContact
+                    (
+                        *pairLaw_, pairBody(a.radius, a.mass, b.radius, b.mass), geo.overlap,
+                        geo.normal, side(a), side(b), Vector::Zero(), 0.0, dt
+                    );
+                    force_[cand.i] += c.force;
+                    force_[cand.j] -= c.force;
+                    tallyPair(cand, -dt*c.power);
+                }
                 continue;
             }
             const ContactBody body = pairBody(a.radius, a.mass, b.radius, b.mass);
@@ -791,6 +817,18 @@ private:
                     slot.state = WallContactState{false, cp.overlap, 0.0};
                     slot.state.velocity = p.v - cp.velocity;
                     slot.handedOver = false;
+                    if (wallLaw_->film())
+                    {
+                        // in the wall's film (lubricated): as a pair's
+                        const ContactStep c = stepContact
+                        (
+                            *wallLaw_, ContactBody(p.radius, p.mass), cp.overlap, cp.normal,
+                            side(p), wallSide(cp.velocity), Vector::Zero(), 0.0, dt
+                        );
+                        force_[i] += c.force;
+                        wallForce_ += c.force;
+                        wallEnergy_[i] -= dt*c.power;
+                    }
                     continue;
                 }
                 if (!slot.touching) ++wallBegun_;

@@ -14,6 +14,7 @@
 #include "UOPstream.H"
 
 #include <algorithm>
+#include <sstream>
 #include <cmath>
 #include <limits>
 #include <vector>
@@ -33,18 +34,21 @@ Foam::RiserContact<CloudType>::readWallLaw() const
         (
             this->coeffDict(), this->owner().constProps().dict()
         );
-    law.wet = wetContact(this->coeffDict());
+    wetContact(this->coeffDict(), law);
     return autoPtr<riser::HertzMindlin>(new riser::HertzMindlin(law));
 }
 
 
 template<class CloudType>
-std::optional<riser::WetRestitution>
-Foam::RiserContact<CloudType>::wetContact(const dictionary& parent) const
+void Foam::RiserContact<CloudType>::wetContact
+(
+    const dictionary& parent,
+    riser::HertzMindlinParameters& law
+) const
 {
     if (!parent.found("wet"))
     {
-        return std::nullopt;
+        return;
     }
     // the carrier's dynamic viscosity, one value (the Stokes number of an
     // impact is the contact's, not the cell's)
@@ -55,10 +59,43 @@ Foam::RiserContact<CloudType>::wetContact(const dictionary& parent) const
     {
         FatalIOErrorInFunction(parent.subDict("wet"))
             << "entry 'wet': the carrier's dynamic viscosity " << mu.name()
-            << " lies in [" << muMin << ", " << muMax << "] Pa s; the wet"
-            << " restitution needs one positive value" << exit(FatalIOError);
+            << " lies in [" << muMin << ", " << muMax << "] Pa s; a wet"
+            << " contact needs one positive value" << exit(FatalIOError);
     }
-    return modelEntries::wetContact(parent, this->coeffDict(), muMax);
+    modelEntries::wetContact(parent, this->coeffDict(), muMax, law);
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserContact<CloudType>::wallFilmGap(const scalar R) const
+{
+    return
+        wallLaw_.valid() && wallLaw_->film()
+      ? wallLaw_->film()->cutoff*R
+      : 0;
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserContact<CloudType>::pairReach
+(
+    const scalar Ra,
+    const scalar Rb
+) const
+{
+    return
+        reach_
+      + (pairLaw_->film() ? pairLaw_->film()->cutoff*Ra*Rb/(Ra + Rb) : 0);
+}
+
+
+template<class CloudType>
+Foam::scalar Foam::RiserContact<CloudType>::pairCutoff() const
+{
+    // (R* of two radii up to R_max is at most R_max/2)
+    return
+        2*radiusMax_ + reach_ + SMALL
+      + (pairLaw_->film() ? 0.5*pairLaw_->film()->cutoff*radiusMax_ : 0);
 }
 
 
@@ -154,13 +191,14 @@ Foam::RiserContact<CloudType>::RiserContact
             (
                 this->coeffDict(), this->owner().constProps().dict()
             );
-        law.wet = wetContact(this->coeffDict().subDict("pairs"));
-        if (law.wet && !riserCloud)
+        wetContact(this->coeffDict().subDict("pairs"), law);
+        if ((law.wet || law.film) && !riserCloud)
         {
             FatalIOErrorInFunction(this->coeffDict().subDict("pairs"))
                 << "entry 'wet' of pairs in a stock colliding cloud: its pair"
-                << " contacts keep no approach speed; wet pairs need the riser"
-                << " cloud (riserParcelFoam, riserCoupledFoam)"
+                << " contacts keep no approach speed and are searched only"
+                << " among touching particles, not within a film; wet pairs"
+                << " need the riser cloud (riserParcelFoam, riserCoupledFoam)"
                 << exit(FatalIOError);
         }
         pairLaw_.reset(new riser::HertzMindlin(law));
@@ -214,16 +252,32 @@ Foam::RiserContact<CloudType>::RiserContact
     {
         Info<< "off";
     }
-    if (wallLaw_.valid() && wallLaw_->wet())
+    // a wet law as the log states it
+    auto wetness = [](const riser::HertzMindlin& law) -> std::string
     {
-        Info<< ", wet (e = e_n exp(-" << wallLaw_->wet()->stokesScale
-            << "/St), none below St " << wallLaw_->wet()->criticalStokes << ")";
+        std::ostringstream s;
+        if (law.wet())
+        {
+            s << "wet (e = e_n exp(-" << law.wet()->stokesScale
+              << "/St), none below St " << law.wet()->criticalStokes << ")";
+        }
+        else if (law.film())
+        {
+            s << "wet (lubrication film from " << law.film()->cutoff
+              << " R* to " << law.film()->roughness << " R*, L = "
+              << law.film()->logRatio() << ": no rebound below St "
+              << law.film()->criticalStokes(law.dryRestitution()) << ")";
+        }
+        return s.str();
+    };
+    if (wallLaw_.valid() && (wallLaw_->wet() || wallLaw_->film()))
+    {
+        Info<< ", " << wetness(*wallLaw_).c_str();
     }
     Info<< ", pair contact " << (pairLaw_.valid() ? "on" : "off");
-    if (pairLaw_.valid() && pairLaw_->wet())
+    if (pairLaw_.valid() && (pairLaw_->wet() || pairLaw_->film()))
     {
-        Info<< " (wet: e = e_n exp(-" << pairLaw_->wet()->stokesScale
-            << "/St), none below St " << pairLaw_->wet()->criticalStokes << ")";
+        Info<< " (" << wetness(*pairLaw_).c_str() << ")";
     }
     Info
         << ", rotation " << rotation_
@@ -560,15 +614,23 @@ void Foam::RiserContact<CloudType>::collide()
         }
     }
 
+    const scalar wallSpeed = riser_.flow().motion().maxSpeed();
     for (parcelType& p : this->owner())
     {
-        // no wall contact, or certainly apart from the wall and in no wall
-        // contact that might end now: no wall force, nothing to record
+        // no wall contact, or certainly apart from the wall (and from its
+        // film, lubricated, within this sub-cycle) and in no wall contact
+        // that might end now: no wall force, nothing to record
         if
         (
             !wallLaw_.valid()
          || (
-                clearOfWall(p, axisOffset, 0)
+                clearOfWall
+                (
+                    p, axisOffset,
+                    wallLaw_->film()
+                  ? wallFilmGap(0.5*p.d()) + (mag(p.U()) + wallSpeed)*dt
+                  : 0
+                )
              && !wallRecord(p)
             )
         )
@@ -618,6 +680,20 @@ void Foam::RiserContact<CloudType>::collide()
             contactTrace trace;
             trace.wallEnergy = -0.5*dt*workBefore;
             wallContactEnds(p, trace, t, p.U() - Uwall, n, spin);
+            if (wallLaw_->film())
+            {
+                // in the film (lubricated): its force, no record (a
+                // contact begins at touch)
+                const riser::ContactStep c =
+                    riser::stepContact
+                    (
+                        *wallLaw_, riser::ContactBody(Rp, mEff), overlap, toCore(n),
+                        contactSide(p), riser::wallSide(cp.velocity), riser::Vector::Zero(),
+                        0, dt
+                    );
+                p.f() = (p.mass()/mEff)*fromCore(c.force);
+                trace.wallEnergy -= 0.5*dt*c.power;
+            }
             addContactTrace(p, trace);
             // no record accessed: update() below drops the tangential spring
             continue;

@@ -118,7 +118,7 @@ void Foam::RiserContact<CloudType>::haloOf
         {
             x[k] = toCore(all[k].x);
         }
-        forEachNearPair(x, 2*radiusMax_ + reach_ + SMALL, [&](std::size_t a, std::size_t b, scalar)
+        forEachNearPair(x, pairCutoff(), [&](std::size_t a, std::size_t b, scalar)
         {
             const grainState& p = all[a];
             const grainState& q = all[b];
@@ -127,7 +127,7 @@ void Foam::RiserContact<CloudType>::haloOf
                 return;
             }
             const scalar gap = pairGap(x[a], p.key, p.R, x[b], q.key, q.R);
-            if (gap > reach_)
+            if (gap > pairReach(p.R, q.R))
             {
                 return;
             }
@@ -241,7 +241,7 @@ Foam::RiserContact<CloudType>::meshFreeContacts
             }
             const labelListList send = nearProcessors
             (
-                x, 2*radiusMax_ + reach_ + SMALL, riser_.section().period()
+                x, pairCutoff(), riser_.section().period()
             );
             // (the springs of the particles sent)
             List<labelList> sendSprings(send.size());
@@ -312,11 +312,11 @@ Foam::RiserContact<CloudType>::meshFreeContacts
         {
             x[i] = toCore(all[local[i]].x);
         }
-        forEachNearPair(x, 2*radiusMax_ + reach_ + SMALL, [&](std::size_t a, std::size_t b, scalar)
+        forEachNearPair(x, pairCutoff(), [&](std::size_t a, std::size_t b, scalar)
         {
             const grainState& p = all[local[a]];
             const grainState& q = all[local[b]];
-            if (pairGap(x[a], p.key, p.R, x[b], q.key, q.R) <= reach_)
+            if (pairGap(x[a], p.key, p.R, x[b], q.key, q.R) <= pairReach(p.R, q.R))
             {
                 parts.join(a, b, 0);
             }

@@ -102,7 +102,17 @@ Foam::label Foam::RiserContact<CloudType>::nearWallSubCycles
             << exit(FatalError);
     }
     const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
-    if (!wallLaw_.valid() || clearOfWall(p, axisOffset, speed*dt))
+    if (!wallLaw_.valid())
+    {
+        return 0;
+    }
+    // lubricated: a particle that may be in the wall's film within the
+    // step is sub-cycled as one that may touch, so that its step changes
+    // where the film is weak (at its cut-off), not near touch, where a
+    // changed step would cost part of an evaluation's impulse
+    // (riserCore's contactKernel.hpp)
+    const scalar reach = speed*dt + wallFilmGap(0.5*p.d());
+    if (clearOfWall(p, axisOffset, reach))
     {
         return 0;
     }
@@ -119,7 +129,7 @@ Foam::label Foam::RiserContact<CloudType>::nearWallSubCycles
             << " >= 0; release it at least d/2 from the wall"
             << exit(FatalError);
     }
-    if (gap > speed*dt)
+    if (gap > reach)
     {
         return 0;
     }
@@ -281,10 +291,9 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
     // fastest particle's speed, so a pair may close by 4 U_max dt: a reach
     // from each pair's own speeds would miss a resting particle struck by
     // a neighbour and left to overlap the next
-    const scalar reach = 4*uMax*dt;
-    reach_ = reach;
+    reach_ = 4*uMax*dt;
     radiusMax_ = rMax;
-    const scalar cutoff = 2*rMax + reach + SMALL;
+    const scalar cutoff = pairCutoff();
 
     // this processor's particles (0 .. nOwn - 1), then the ghosts
     const labelListList send =
@@ -355,7 +364,7 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
     {
         const label p = i, q = j;
         const scalar gap = pairGap(x[p], keys[p], 0.5*D[p], x[q], keys[q], 0.5*D[q]);
-        if (gap > reach)
+        if (gap > pairReach(0.5*D[p], 0.5*D[q]))
         {
             return;
         }
