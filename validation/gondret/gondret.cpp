@@ -21,11 +21,11 @@
 // speed (Legendre et al., Chem. Eng. Sci. 61, 3543, 2006), none below
 // St 10, calibrated, as in the library, for the inertia m_p + C_A m_f.
 // Two more are lubricated (riser::LubricationFilm, the library's
-// `wet { type lubrication; }` with its defaults, cutoff 1 and roughness
-// 2e-5, which were chosen to follow Legendre et al.'s fit, not this
+// `wet { type lubrication; }` with its defaults, cutoff 0.1 and roughness
+// 2e-6, which were chosen to follow Legendre et al.'s fit, not this
 // experiment): the dry contact keeps e_dry and the film's force
 // -6 pi mu R^2 v (1/max(h, h_r) - 1/h_cut) acts below the cut-off gap
-// h_cut = R. In the trapezoidal stepper below the film enters each step as
+// h_cut = 0.1 R. In the trapezoidal stepper below the film enters each step as
 // its exact impulse between the step's two gaps over the step (the gap at
 // the step's end from the stepper's own iteration), as the library's
 // contact kernel takes it; the trapezoid then applies half of it in the
@@ -371,7 +371,7 @@ int main(int argc, char* argv[])
     say("Gondret, Lance & Petit (2002), St = 152: steel sphere d = %g mm, %g kg/m^3, in silicone oil"
         " (%g kg/m^3, %g Pa s) on a glass wall (assumed)\n", s.d*1e3, s.rhoP, s.rhoF, s.mu);
     say("model: drag Clift-Gauvin (unbounded), C_A = %g, Basset C_H = 6 or none, Hertz-Mindlin with"
-        " e_dry = %g (steel on glass); dry and wet: no lubrication; film: the lubrication film (cutoff 1, roughness 2e-5); no wall-corrected drag\n", s.CA, s.eDry);
+        " e_dry = %g (steel on glass); dry and wet: no lubrication; film: the lubrication film (cutoff 0.1, roughness 2e-6); no wall-corrected drag\n", s.CA, s.eDry);
     say("release from rest at a gap of %.2f m; constant step h = %.1e s; Basset window %.0e s + tail"
         " (least-squares constants)\n", s.releaseGap, h, windowTime);
     say("terminal speed of the drag law: %.4f m/s (Re = %.1f, St = %.1f)\n", Vt, ReT, stokes(Vt));

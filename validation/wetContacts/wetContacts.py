@@ -43,7 +43,7 @@ os.makedirs(results, exist_ok=True)
 RHO_P, RHO_F, MU, D = 2000.0, 1000.0, 1e-3, 0.01
 WET = {"wet": "{ type stokesRestitution; }", "film": "{ type lubrication; }"}
 VARIANTS = ("dry", "wet", "film")
-L_FILM = math.log(1 / 2e-5)     # the film's defaults: cutoff 1, roughness 2e-5
+L_FILM = math.log(0.1 / 2e-6)   # the film's defaults: cutoff 0.1, roughness 2e-6
 
 
 def stokes(UnIn):
@@ -121,7 +121,7 @@ json.dump(result, open(os.path.join(results, "wetContacts.json"), "w"), indent=1
 with open(os.path.join(results, "summary.md"), "w") as out:
     out.write("# Dry and wet contacts in water (validation/wetContacts)\n\n")
     out.write("wet: `wet { type stokesRestitution; }`; film: `wet { type lubrication; }`"
-              " (cutoff 1, roughness 2e-5). The film's UnIn is the speed left after the film.\n\n")
+              " (cutoff 0.1, roughness 2e-6). The film's UnIn is the speed left after the film.\n\n")
     out.write("| run | lift or mean axial velocity | wall contacts / s | pair contacts / s |"
               " mean UnOut/UnIn | wall impacts' St: median, share below 100 | run time [s] |\n"
               "|---|---|---|---|---|---|---|\n")

@@ -118,24 +118,31 @@ inline double filmImpulse(const LubricationFilm& film, const ContactBody& body,
 {
     const double R = body.radius, M = body.mass;
     const double upper = gap + 0.5*u*dt;
+    // beyond the cut-off at both ends, whatever J: no film (the lower end
+    // lies between gap - uAhead dt/2, J = 0, and gap, J stopping)
+    const double cut = film.cutoff*R;
+    if (upper >= cut && std::min(gap, gap - 0.5*uAhead*dt) >= cut) return 0.0;
+    const double c = film.coefficient(R), Gupper = film.potential(R, upper);
     auto lower = [&](double J) { return gap - 0.5*(uAhead + J/M)*dt; };
     // f(J) = J - 6 pi mu R^2 [G(lower(J)) - G(upper)], increasing in J
-    auto f = [&](double J) { return J - film.impulse(R, upper, lower(J)); };
+    auto f = [&](double J) { return J - c*(film.potential(R, lower(J)) - Gupper); };
     const double stop = -M*uAhead;
-    const double lo0 = std::min(0.0, stop), hi0 = std::max(0.0, stop);
-    if (lo0 == hi0) return 0.0;
-    // the root, or the end of the bracket it lies beyond
-    if (f(lo0) >= 0.0) return lo0;
-    if (f(hi0) <= 0.0) return hi0;
-    double lo = lo0, hi = hi0;
-    const double tol = 1e-13*(hi0 - lo0);
-    double J = 0.5*(lo + hi);
-    for (int k = 0; k < 200; ++k)
+    if (stop == 0.0) return 0.0;
+    const double f0 = f(0.0);
+    if (f0 == 0.0) return 0.0;
+    // the root lies between 0 and stop, or beyond stop: then stop
+    const double fStop = f(stop);
+    if ((fStop > 0.0) == (f0 > 0.0)) return stop;
+    double lo = std::min(0.0, stop), hi = std::max(0.0, stop);
+    const double tol = 1e-13*(hi - lo);
+    // Newton's method from the explicit impulse (that of the gap the step
+    // reaches without the film), kept in the bracket
+    double J = std::min(std::max(-f0, lo), hi);
+    for (int k = 0; k < 100; ++k)
     {
         const double fJ = f(J);
         (fJ > 0.0 ? hi : lo) = J;
-        const double slope =
-            1.0 + 0.5*film.coefficient(R)*film.weight(R, lower(J))*dt/M;
+        const double slope = 1.0 + 0.5*c*film.weight(R, lower(J))*dt/M;
         double next = J - fJ/slope;
         if (!(next > lo && next < hi)) next = 0.5*(lo + hi);
         const bool done = std::abs(next - J) <= tol || hi - lo <= tol;

@@ -23,7 +23,10 @@
 //   0 < h < h_cut;   no film force at h >= h_cut or in contact (h <= 0),
 //   where the Hertz–Mindlin law alone acts.
 //
-// Both lengths scale with R*: h_cut = cutoff R*, h_r = roughness R*.
+// Both lengths scale with R*: h_cut = cutoff R*, h_r = roughness R*. The
+// cut-off is where Reynolds' leading term stops being the film's force
+// (at h = 0.1 R* the next terms of the exact solution add about a tenth);
+// beyond it the drag is the fluid's force.
 //
 // Impulse. With dh = -U_n dt, the film's impulse between two gaps does not
 // depend on how fast the gap closes:
@@ -49,15 +52,19 @@
 // the St of wetRestitution.hpp (with M the inertia with added mass C_A =
 // 1/2: St = (rho_p + rho_f/2) v d/(9 mu) at the wall). A body whose St is
 // below L never touches; below St_c = L (1 + e_dry)/e_dry it does not
-// leave the film. The defaults, cutoff 1 and roughness 2e-5 (L = 10.82),
+// leave the film. The defaults, cutoff 0.1 and roughness 2e-6 (L = 10.82),
 // give St_c = 22.0 for e_dry = 0.97 and follow Legendre et al.'s fit e =
 // e_dry exp(-35/St) (Chem. Eng. Sci. 61, 3543, 2006, of the wall impacts
 // of Joseph et al., J. Fluid Mech. 433, 329, 2001) over St 10 to 1,000
 // with an RMS of 0.069 in e (tests/core/lubricationTest.cpp): L = 10.74 is
 // the value that fits best; L = 5 would put St_c at 10 but the rebound at
-// St 50 0.3 above the fit. For a 10 mm ore the default roughness is 0.1
-// um; rougher surfaces (a larger roughness, a smaller L) rebound from
-// lower St. The film has no tangential part: sliding in the liquid is the
+// St 50 0.3 above the fit. Only L sets e(St); for a 10 mm ore the
+// default roughness is 10 nm, an effective length rather than a measured
+// one (the elastic flattening of the gap, not modelled, takes its place
+// in the experiments); rougher surfaces (a larger roughness, a smaller L)
+// rebound from lower St. cutoff 1 with roughness 2e-5 has the same L but
+// lists more pairs within each other's film (a dense scene costs a third
+// more with it). The film has no tangential part: sliding in the liquid is the
 // contact's friction coefficient (doc/theory.md).
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
@@ -74,8 +81,8 @@ namespace riser {
 struct LubricationFilm
 {
     double viscosity;           //!< the liquid's mu [Pa s]
-    double cutoff = 1.0;        //!< h_cut / R*
-    double roughness = 2e-5;    //!< h_r / R*
+    double cutoff = 0.1;        //!< h_cut / R*
+    double roughness = 2e-6;    //!< h_r / R*
 
     void check() const
     {
