@@ -120,7 +120,7 @@ inline double filmImpulse(const LubricationFilm& film, const ContactBody& body,
     const double upper = gap + 0.5*u*dt;
     // beyond the cut-off at both ends, whatever J: no film (the lower end
     // lies between gap - uAhead dt/2, J = 0, and gap, J stopping)
-    const double cut = film.cutoff*R;
+    const double cut = film.cutoffGap(R);
     if (upper >= cut && std::min(gap, gap - 0.5*uAhead*dt) >= cut) return 0.0;
     const double c = film.coefficient(R), Gupper = film.potential(R, upper);
     auto lower = [&](double J) { return gap - 0.5*(uAhead + J/M)*dt; };

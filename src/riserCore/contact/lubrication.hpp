@@ -96,23 +96,26 @@ struct LubricationFilm
     //- L = ln(h_cut/h_r): the film's impulse over 6 pi mu R*^2
     double logRatio() const { return std::log(cutoff/roughness); }
 
+    //- h_cut = cutoff R* [m]
+    double cutoffGap(double R) const { return cutoff*R; }
+
     //- 6 pi mu R*^2 [N s/m]
     double coefficient(double R) const { return 6.0*M_PI*viscosity*R*R; }
 
     //- The film is on at gap h: 0 < h < h_cut
-    bool acts(double R, double gap) const { return gap > 0.0 && gap < cutoff*R; }
+    bool acts(double R, double gap) const { return gap > 0.0 && gap < cutoffGap(R); }
 
     //- g(h) = 1/max(h, h_r) - 1/h_cut in the film, 0 outside [1/m]
     double weight(double R, double gap) const
     {
         if (!acts(R, gap)) return 0.0;
-        return 1.0/std::max(gap, roughness*R) - 1.0/(cutoff*R);
+        return 1.0/std::max(gap, roughness*R) - 1.0/cutoffGap(R);
     }
 
     //- G(h) = int_0^h g [-]
     double potential(double R, double gap) const
     {
-        const double hr = roughness*R, hc = cutoff*R;
+        const double hr = roughness*R, hc = cutoffGap(R);
         if (gap <= 0.0) return 0.0;
         if (gap <= hr) return gap*(1.0/hr - 1.0/hc);
         if (gap < hc) return 1.0 + std::log(gap/hr) - gap/hc;

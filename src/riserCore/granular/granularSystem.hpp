@@ -645,8 +645,8 @@ private:
         if (n < 2 && preset_.empty() && list_.empty()) return;  // no pair
         // lubricated: a pair is listed while in each other's film too
         // (R* of two radii up to R_max is at most R_max/2)
-        const double film = pairLaw_->film() ? pairLaw_->film()->cutoff : 0.0;
-        const double cutoff = 2.0*rMax + skinLength_ + 0.5*film*rMax;
+        const auto& film = pairLaw_->film();
+        const double cutoff = 2.0*rMax + skinLength_ + (film ? film->cutoffGap(0.5*rMax) : 0.0);
         // the contacts in progress (those handed over not yet evaluated)
         std::unordered_map<std::uint64_t, Candidate> kept;
         for (const auto& p : preset_)
@@ -668,7 +668,8 @@ private:
         pairs_.forEachPair(positions_, cutoff, [&](std::size_t i, std::size_t j, double dz)
         {
             const double Ri = grains_[i].radius, Rj = grains_[j].radius;
-            const double reach = Ri + Rj + skinLength_ + film*Ri*Rj/(Ri + Rj);
+            const double reach =
+                Ri + Rj + skinLength_ + (film ? film->cutoffGap(Ri*Rj/(Ri + Rj)) : 0.0);
             if ((positions_[j] + Vector(0.0, 0.0, dz) - positions_[i]).squaredNorm() > reach*reach)
             {
                 return;

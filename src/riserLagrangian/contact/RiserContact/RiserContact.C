@@ -69,10 +69,7 @@ void Foam::RiserContact<CloudType>::wetContact
 template<class CloudType>
 Foam::scalar Foam::RiserContact<CloudType>::wallFilmGap(const scalar R) const
 {
-    return
-        wallLaw_.valid() && wallLaw_->film()
-      ? wallLaw_->film()->cutoff*R
-      : 0;
+    return wallLaw_.valid() && wallLaw_->film() ? wallLaw_->film()->cutoffGap(R) : 0;
 }
 
 
@@ -85,7 +82,7 @@ Foam::scalar Foam::RiserContact<CloudType>::pairReach
 {
     return
         reach_
-      + (pairLaw_->film() ? pairLaw_->film()->cutoff*Ra*Rb/(Ra + Rb) : 0);
+      + (pairLaw_->film() ? pairLaw_->film()->cutoffGap(Ra*Rb/(Ra + Rb)) : 0);
 }
 
 
@@ -95,7 +92,7 @@ Foam::scalar Foam::RiserContact<CloudType>::pairCutoff() const
     // (R* of two radii up to R_max is at most R_max/2)
     return
         2*radiusMax_ + reach_ + SMALL
-      + (pairLaw_->film() ? 0.5*pairLaw_->film()->cutoff*radiusMax_ : 0);
+      + (pairLaw_->film() ? pairLaw_->film()->cutoffGap(0.5*radiusMax_) : 0);
 }
 
 
@@ -675,25 +672,21 @@ void Foam::RiserContact<CloudType>::collide()
                 )
             );
 
+        const riser::ContactBody body(Rp, mEff);
         if (overlap <= 0)
         {
+            // apart: the kernel's film force if lubricated (else none), and
+            // no record (a contact begins at touch)
+            const riser::ContactStep c =
+                riser::stepContact
+                (
+                    *wallLaw_, body, overlap, toCore(n), contactSide(p),
+                    riser::wallSide(cp.velocity), riser::Vector::Zero(), 0, dt
+                );
+            p.f() = (p.mass()/mEff)*fromCore(c.force);
             contactTrace trace;
-            trace.wallEnergy = -0.5*dt*workBefore;
+            trace.wallEnergy = -0.5*dt*(workBefore + c.power);
             wallContactEnds(p, trace, t, p.U() - Uwall, n, spin);
-            if (wallLaw_->film())
-            {
-                // in the film (lubricated): its force, no record (a
-                // contact begins at touch)
-                const riser::ContactStep c =
-                    riser::stepContact
-                    (
-                        *wallLaw_, riser::ContactBody(Rp, mEff), overlap, toCore(n),
-                        contactSide(p), riser::wallSide(cp.velocity), riser::Vector::Zero(),
-                        0, dt
-                    );
-                p.f() = (p.mass()/mEff)*fromCore(c.force);
-                trace.wallEnergy -= 0.5*dt*c.power;
-            }
             addContactTrace(p, trace);
             // no record accessed: update() below drops the tangential spring
             continue;
@@ -707,7 +700,7 @@ void Foam::RiserContact<CloudType>::collide()
         const riser::ContactStep c =
             riser::stepContact
             (
-                *wallLaw_, riser::ContactBody(Rp, mEff), overlap, toCore(n),
+                *wallLaw_, body, overlap, toCore(n),
                 contactSide(p), riser::wallSide(cp.velocity), toCore(spring),
                 approachSpeed, dt
             );
