@@ -7,6 +7,8 @@
 #include <gtest/gtest.h>
 #include <cmath>
 #include <complex>
+#include <stdexcept>
+#include <type_traits>
 #include <vector>
 
 using namespace riser;
@@ -161,4 +163,52 @@ TEST(BassetMotion, OscillatingCarrierMatchesTheClosedForm)
                 std::abs(measured), std::arg(measured), std::abs(expected), std::arg(expected));
     EXPECT_NEAR(std::abs(measured)/std::abs(expected), 1.0, 5e-4);
     EXPECT_NEAR(std::arg(measured), std::arg(expected), 5e-4);
+}
+
+namespace {
+
+//- A stiff linear drag, F = -c v, no added mass and no history: the
+//  trapezoidal rule's step is then v_{n+1} = v_n (1 - q)/(1 + q) with
+//  q = c h/(2 m), and its fixed-point iteration diverges for q > 1
+template<class V>
+struct StiffDrag
+{
+    using Value = V;
+    double m, c;
+    double mass() const { return m; }
+    double addedMass() const { return 0.0; }
+    double historyCoefficient() const { return 0.0; }
+    static Value zero()
+    {
+        if constexpr (std::is_floating_point_v<V>) return 0.0;
+        else return V::Zero();
+    }
+    Value carrierVelocity(double) const { return zero(); }
+    Value carrierAcceleration(double) const { return zero(); }
+    Value force(const Value& v, double) const { return Value(-c*v); }
+};
+
+} // namespace
+
+// A force too stiff for the fixed-point iteration (q = c h/(2 m) = 50):
+// a scalar step solves its monotone equation by bisection and lands on the
+// trapezoidal rule's closed form to round-off (1e-12 relative over 20
+// steps, each step's bisection to 1e-15); a vector step throws rather than
+// keep an unconverged acceleration.
+TEST(BassetMotion, StiffForceIsSolvedOrRefused)
+{
+    const double m = 1e-3, c = 10.0, h = 1e-2, q = c*h/(2.0*m);
+    const StiffDrag<double> scalarLaw{m, c};
+    HistoryStepper<StiffDrag<double>> scalar(scalarLaw, HistoryMethod::windowTail, h, 2, 1.0);
+    double v = 1.0;
+    for (int k = 0; k < 20; ++k)
+    {
+        scalar.step();
+        v *= (1.0 - q)/(1.0 + q);
+        EXPECT_NEAR(scalar.velocity(), v, 1e-12*std::abs(v)) << "step " << k;
+    }
+    const StiffDrag<Eigen::Vector3d> vectorLaw{m, c};
+    HistoryStepper<StiffDrag<Eigen::Vector3d>> vector
+        (vectorLaw, HistoryMethod::windowTail, h, 2, Eigen::Vector3d(1.0, 0.0, 0.0));
+    EXPECT_THROW(vector.step(), std::runtime_error);
 }

@@ -1,45 +1,26 @@
 // Gondret, Lance & Petit (2002), St = 152: a steel sphere falls from rest in
-// silicone oil and bounces on a flat horizontal wall. The sphere is the
-// model of doc/theory.md section 1 in a quiescent fluid, vertical motion only:
-//
-//   (m_p + C_A m_f) dv/dt = -c(Re) v - (m_p - m_f) g + F_H + F_C,   dz/dt = v
-//
-// c(Re): the standard drag curve of Clift & Gauvin (riser::dragFactor,
-// DragLaw::continuous) with the pipe's wall factors switched off (d/D = 0:
-// an unbounded sphere); C_A = 1/2; F_H the Basset force with the classical
-// C_H = 6 (riser::HistoryStepper, newest weight implicit, window + tail);
-// F_C the Hertz–Mindlin wall force with Tsuji damping calibrated to e_dry
-// (riser::HertzMindlin). Each run is done with and without F_H. The dry
-// model has no lubrication and no wall correction of the drag (neither has
-// any run): the sphere meets
-// the wall with its free-fall speed and leaves it with about e_dry times
-// that (0.968 with Basset, 0.971 without: the added mass and the history
-// take part in the 16 us contact that was calibrated for m_p alone).
-// Two more runs, with and without F_H, are wet (riser::WetRestitution, the library's
-// `wet { type stokesRestitution; }`): each contact gets the damping of
-// e = e_dry exp(-35/St), St = (rho_p + rho_f/2) v d/(9 mu) of its approach
-// speed (Legendre et al., Chem. Eng. Sci. 61, 3543, 2006), none below
-// St 10, calibrated, as in the library, for the inertia m_p + C_A m_f.
-// Two more are lubricated (riser::LubricationFilm, the library's
-// `wet { type lubrication; }` with its defaults, cutoff 0.1 and roughness
+// silicone oil and bounces on a flat horizontal wall. The sphere, the
+// liquid and the wall are the law of ../common/sphereOnFlatWall.hpp (drag
+// of an unbounded sphere, C_A = 1/2, classical Basset force, Hertz–Mindlin
+// contact). Each run is done with and without the Basset force. The dry
+// runs have no lubrication and no wall correction of the drag (no run has
+// the latter): the sphere meets the wall with its free-fall speed and
+// leaves it with about e_dry times that (0.968 with Basset, 0.971 without:
+// the added mass and the history take part in the 16 us contact that was
+// calibrated for m_p alone). Two more runs are wet by the restitution
+// e = e_dry exp(-35/St), St = (rho_p + rho_f/2) v d/(9 mu) of the approach
+// speed (Legendre et al., Chem. Eng. Sci. 61, 3543, 2006), none below St 10.
+// Two more are lubricated, with the film's defaults (cutoff 0.1, roughness
 // 2e-6, which were chosen to follow Legendre et al.'s fit, not this
 // experiment): the dry contact keeps e_dry and the film's force
-// -6 pi mu R^2 v (1/max(h, h_r) - 1/h_cut) acts below the cut-off gap
-// h_cut = 0.1 R. In the trapezoidal stepper below the film enters each step as
-// its exact impulse between the step's two gaps over the step (the gap at
-// the step's end from the stepper's own iteration), as the library's
-// contact kernel takes it; the trapezoid then applies half of it in the
-// step and half in the next, so the film's whole impulse is kept.
+// -6 pi mu R^2 v (1/max(h, h_r) - 1/h_cut) acts below the gap h_cut = 0.1 R.
 //
 // Release from rest at a gap of 1 m. Without the Basset force the sphere
 // reaches its terminal speed within 0.2 m; with it, it approaches that speed
 // only as t^-1/2 (2% below it after 1 m, 1% after 3 m), so the release
 // height is one of the checks the program prints.
 //
-// Position and velocity share the stepper's trapezoidal rule: the law keeps
-// the last committed state (t_n, z_n, v_n) and evaluates the force at
-// z = z_n + (t - t_n)(v_n + v)/2, so the stepper's fixed-point iteration on
-// v_{n+1} solves the contact implicitly. One constant step for the whole
+// One constant step for the whole
 // run (the history's grid): 5e-7 s, 1/32 of the Hertz contact time; a dry
 // impact then rebounds with e = 0.9699 for 0.97. The history costs O(window)
 // per step, so the 4e6 steps of a run take a few seconds.
@@ -62,222 +43,22 @@
 // wetNoBasset: t after the first contact, gap, v) and prints the comparison (Allrun keeps it in
 // results/summary.txt)
 // SPDX-License-Identifier: GPL-3.0-or-later
-#include "basset/bassetCoefficient.hpp"
-#include "contact/hertzMindlin.hpp"
-#include "drag/dragCoefficient.hpp"
-#include "motion/historyStepper.hpp"
+#include "sphereOnFlatWall.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <cstdio>
-#include <ctime>
 #include <fstream>
 #include <sstream>
-#include <string>
-#include <vector>
 
-using namespace riser;
+using namespace validation;
 
 namespace {
 
-struct Scene
+//- Gondret et al.'s steel sphere in silicone oil over a glass wall (assumed)
+Scene gondretScene()
 {
-    double d = 3e-3, rhoP = 7800.0, rhoF = 935.0, mu = 0.01, g = 9.81;
-    double CA = 0.5;
-    double releaseGap = 1.0;      //!< gap at release from rest [m]
-    double eDry = 0.97;
-    ElasticMaterial sphere{200e9, 0.3};   // steel
-    ElasticMaterial wall{63e9, 0.23};     // glass (assumed)
-
-    double R() const { return 0.5*d; }
-    double volume() const { return M_PI*d*d*d/6.0; }
-    double mp() const { return rhoP*volume(); }
-    double mf() const { return rhoF*volume(); }
-};
-
-//- Dry, wet by its restitution e(St), or wet by its lubrication film
-enum class Wetness { dry, restitution, film };
-
-//- The law of motion, vertical (z up, wall at z = 0), as a System of
-//  riser::HistoryStepper. fluid = false leaves the contact alone (the dry
-//  impact check).
-class SphereOnFlatWall
-{
-public:
-    using Value = double;
-
-    SphereOnFlatWall(const Scene& s, bool basset, bool fluid = true, Wetness wet = Wetness::dry)
-    :
-        s_(s), fluid_(fluid),
-        KH_(basset && fluid ? classicalBassetCoefficient*s.d*s.d/4.0*std::sqrt(M_PI*s.rhoF*s.mu) : 0.0),
-        unbounded_(0.0),
-        contact_(lawOf(s, wet)),
-        body_(s.R(), wet == Wetness::restitution ? s.mp() + s.CA*s.mf() : s.mp())
-    {}
-
-    static HertzMindlinParameters lawOf(const Scene& s, Wetness wet)
-    {
-        HertzMindlinParameters p{s.sphere, s.wall, s.eDry, 1.0, 0.0};
-        if (wet == Wetness::restitution) p.wet = WetRestitution{s.mu};
-        if (wet == Wetness::film) p.film = LubricationFilm{s.mu};
-        return p;
-    }
-
-    double mass() const { return s_.mp(); }
-    double addedMass() const { return fluid_ ? s_.CA*s_.mf() : 0.0; }
-    double historyCoefficient() const { return KH_; }
-    double carrierVelocity(double) const { return 0.0; }
-    double carrierAcceleration(double) const { return 0.0; }
-
-    //- Centre height at time t >= t_n for velocity v at t (trapezoidal)
-    double height(double v, double t) const { return z_ + 0.5*(t - t_)*(v_ + v); }
-
-    double force(double v, double t) const
-    {
-        double F = 0.0;
-        if (fluid_)
-        {
-            const double Re = s_.rhoF*s_.d*std::abs(v)/s_.mu;
-            F = -dragFactor(DragLaw::continuous, unbounded_, s_.d, s_.mu, Re)*v
-              - (s_.mp() - s_.mf())*s_.g;
-        }
-        return F + contactForce(height(v, t), v) + filmForce(height(v, t), t);
-    }
-
-    //- The film's impulse from the committed gap to the gap at t, over the
-    //  step (upwards while the gap closes)
-    double filmForce(double z, double t) const
-    {
-        if (!contact_.film() || t <= t_) return 0.0;
-        return -contact_.film()->impulse(s_.R(), gap(), z - s_.R())/(t - t_);
-    }
-
-    double contactForce(double z, double v) const
-    {
-        const double overlap = s_.R() - z;
-        if (overlap <= 0.0) return 0.0;
-        const Vector n(0.0, 0.0, -1.0);       // centre -> wall
-        // the approach speed: the last committed velocity out of contact
-        const double vIn = std::isnan(vIn_) ? -v_ : vIn_;
-        return contact_.force(body_, overlap, n, Vector(0.0, 0.0, v), Vector::Zero(), vIn)
-               .normal.z();
-    }
-
-    void place(double t, double z, double v) { t_ = t; z_ = z; v_ = v; }
-    void commit(double t, double v)
-    {
-        const double vBefore = v_;
-        place(t, height(v, t), v);
-        if (gap() > 0.0) vIn_ = NAN;
-        else if (std::isnan(vIn_)) vIn_ = -vBefore;
-    }
-    double gap() const { return z_ - s_.R(); }
-    double contactTime(double v) const { return contact_.contactTime(body_, v); }
-
-private:
-    const Scene& s_;
-    bool fluid_;
-    double KH_;
-    WallFactors unbounded_;
-    HertzMindlin contact_;
-    ContactBody body_;
-    double t_ = 0.0, z_ = 0.0, v_ = 0.0;
-    double vIn_ = NAN;      //!< approach speed of the contact in progress
-};
-
-struct Sample { double t, gap, v; };
-
-//- A contact: touch and separation times (interpolated in the step) and the
-//  speeds at the steps just before and just after it (free flight)
-struct Contact { double tTouch, vTouch, tLeave = NAN, vLeave = NAN; };
-struct Apex { double t, gap; };
-
-struct Run
-{
-    std::vector<Sample> curve;      // every outputEvery steps, t from release
-    std::vector<Contact> contacts;
-    std::vector<Apex> apexes;       // highest gap after each contact
-    long steps = 0;
-    double cpu = 0.0;
-    double t0() const { return contacts.at(0).tTouch; }
-};
-
-//- Release from rest, follow the sphere to tAfter past the first contact
-Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAfter,
-           long outputEvery, Wetness wet = Wetness::dry)
-{
-    SphereOnFlatWall law(s, basset, true, wet);
-    law.place(0.0, s.releaseGap + s.R(), 0.0);
-    // without the Basset force (K_H = 0) the history is carried but unused
-    const long window = basset ? std::max(2L, std::lround(windowTime/h)) : 2L;
-    Run r;
-    const std::clock_t start = std::clock();
-    HistoryStepper<SphereOnFlatWall> stepper(law, HistoryMethod::windowTail, h, window, 0.0, 0.0,
-                                             NewestHistoryWeight::implicit, HistoryTail::leastSquares);
-    double tEnd = HUGE_VAL;
-    double gapOld = law.gap(), vOld = 0.0;
-    bool flying = true;
-    while (stepper.time() < tEnd)
-    {
-        stepper.step();
-        const double t = stepper.time(), v = stepper.velocity();
-        law.commit(t, v);
-        const double gap = law.gap();
-        ++r.steps;
-        if (flying != (gap > 0.0))
-        {
-            const double tc = t - h*gap/(gap - gapOld);
-            flying = !flying;
-            if (!flying)
-            {
-                r.contacts.push_back({tc, vOld});
-                if (r.contacts.size() == 1) tEnd = tc + tAfter;
-            }
-            else
-            {
-                r.contacts.back().tLeave = tc;
-                r.contacts.back().vLeave = v;
-                r.apexes.push_back({t, gap});
-            }
-        }
-        if (flying && !r.apexes.empty() && gap > r.apexes.back().gap) r.apexes.back() = {t, gap};
-        if (r.steps % outputEvery == 0) r.curve.push_back({t, gap, v});
-        gapOld = gap;
-        vOld = v;
-    }
-    r.cpu = double(std::clock() - start)/CLOCKS_PER_SEC;
-    return r;
-}
-
-//- Restitution of one impact at speed v without fluid, same stepper and step
-//  (the speed at the first step after the contact: there is no other force)
-double dryRestitution(const Scene& s, double v, double h)
-{
-    SphereOnFlatWall law(s, false, false);
-    law.place(0.0, s.R() + 0.5*v*h, -v);       // half a step above the wall
-    HistoryStepper<SphereOnFlatWall> stepper(law, HistoryMethod::windowTail, h, 2, -v);
-    bool touched = false;
-    for (long k = 0; k < 10000000L; ++k)
-    {
-        stepper.step();
-        law.commit(stepper.time(), stepper.velocity());
-        touched = touched || law.gap() <= 0.0;
-        if (touched && law.gap() > 0.0) return stepper.velocity()/v;
-    }
-    return NAN;
-}
-
-//- Terminal speed of the drag law: c(Re) V = (m_p - m_f) g, by bisection
-double terminalSpeed(const Scene& s)
-{
-    const WallFactors unbounded(0.0);
-    double lo = 0.0, hi = 10.0;
-    for (int i = 0; i < 200; ++i)
-    {
-        const double V = 0.5*(lo + hi), Re = s.rhoF*s.d*V/s.mu;
-        (dragFactor(DragLaw::continuous, unbounded, s.d, s.mu, Re)*V < (s.mp() - s.mf())*s.g ? lo : hi) = V;
-    }
-    return 0.5*(lo + hi);
+    //    d [m], rho_p, rho_f [kg/m^3], mu [Pa s], g, C_A, release gap [m], e_dry
+    return {3e-3, 7800.0, 935.0, 0.01, 9.81, 0.5, 1.0, 0.97,
+            {200e9, 0.3},       // steel
+            {63e9, 0.23}};      // glass (assumed)
 }
 
 //- Model gap at time t after the first contact (linear between samples)
@@ -337,7 +118,7 @@ int main(int argc, char* argv[])
     const std::string out = argv[2];
     if (exp.t.size() < 10) { std::fprintf(stderr, "no data in %s\n", argv[1]); return 1; }
 
-    const Scene s;
+    const Scene s = gondretScene();
     const double h = 5e-7;              // ~32 steps per contact at 0.585 m/s
     const double windowTime = 1e-4;     // Basset window (200 steps) + tail
     const double tAfter = 0.25;         // followed past the first contact
@@ -366,8 +147,8 @@ int main(int argc, char* argv[])
     const Apex published[3] = {{0.037, 7.47e-3}, {0.106, 2.23e-3}, {0.140, 0.52e-3}};
 
     const SphereOnFlatWall probe(s, false);
-    const double Vt = terminalSpeed(s), ReT = s.rhoF*s.d*Vt/s.mu;
-    auto stokes = [&s](double v) { return s.rhoP*s.d*std::abs(v)/(9.0*s.mu); };
+    const double Vt = terminalSpeed(s), ReT = s.reynolds(Vt);
+    auto stokes = [&s](double v) { return s.stokes(v); };
     say("Gondret, Lance & Petit (2002), St = 152: steel sphere d = %g mm, %g kg/m^3, in silicone oil"
         " (%g kg/m^3, %g Pa s) on a glass wall (assumed)\n", s.d*1e3, s.rhoP, s.rhoF, s.mu);
     say("model: drag Clift-Gauvin (unbounded), C_A = %g, Basset C_H = 6 or none, Hertz-Mindlin with"

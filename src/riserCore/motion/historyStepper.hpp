@@ -19,7 +19,13 @@
 // (riser::HistoryIntegral): the newest weight sits beside the added mass,
 // so the scheme stays stable for light particles, where an explicit newest
 // weight does not. F's dependence on v_{n+1} is resolved by fixed-point
-// iteration (to a relative change of 1e-14 or 50 iterations).
+// iteration (to a relative change of 1e-14, at most 50 iterations). A stiff
+// F (a contact's film, a spring within one step) makes that iteration
+// diverge. For a scalar v the step then solves its equation by bisection:
+// with F non-increasing in v_{n+1} (drag, dashpots, and springs and films
+// through the position z_n + h/2 (v_n + v_{n+1})) the residual
+// (m + m_A + K_H c) a - F - ... grows with a, so the root is unique. For a
+// vector v a step left unconverged (relative change above 1e-8) is an error.
 //
 // For comparison the newest weight can be lagged instead (explicit: it uses
 // the previous acceleration). The previous value then enters twice (its own
@@ -42,6 +48,8 @@
 #include "basset/historyIntegral.hpp"
 
 #include <cmath>
+#include <stdexcept>
+#include <type_traits>
 
 namespace riser {
 
@@ -84,13 +92,30 @@ public:
           : Value(KH*history_.knownPart() + mA*DuDt + KH*c*(DuDt - a_));
 
         Value a = a_;
+        double change = 0.0, size = 1.0;
         for (int it = 0; it < 50; ++it)
         {
             const Value v = v_ + 0.5*h_*(a_ + a);
             const Value aNew = (sys_.force(v, tNew) + known)/inertia;
-            const double change = norm(aNew - a), size = norm(aNew) + 1e-300;
+            change = norm(aNew - a);
+            size = norm(aNew) + 1e-300;
             a = aNew;
             if (change <= 1e-14*size) break;
+        }
+        if (!(change <= 1e-14*size))        // also when NaN
+        {
+            if constexpr (std::is_floating_point_v<Value>)
+            {
+                a = bisect(tNew, known, inertia);
+            }
+            else if (!(change <= 1e-8*size))
+            {
+                throw std::runtime_error
+                (
+                    "riser::HistoryStepper: the implicit step did not converge"
+                    " (a force too stiff for the step h)"
+                );
+            }
         }
         v_ = v_ + 0.5*h_*(a_ + a);
         a_ = a;
@@ -100,6 +125,34 @@ public:
 
 private:
     static double norm(double x) { return std::abs(x); }
+
+    //- The scalar step's acceleration: the root of the residual
+    //  inertia a - F(v_n + h/2 (a_n + a)) - known, which grows with a
+    double bisect(double tNew, double known, double inertia) const
+    {
+        auto residual = [&](double a)
+        {
+            return inertia*a - sys_.force(v_ + 0.5*h_*(a_ + a), tNew) - known;
+        };
+        double lo = a_, hi = a_;
+        double width = std::abs(a_) + std::abs(known)/inertia + 1.0;
+        for (int k = 0; residual(lo) > 0.0; ++k, width *= 2.0)
+        {
+            if (k == 2000) throw std::runtime_error("riser::HistoryStepper: no bracket for the step");
+            lo = a_ - width;
+        }
+        for (int k = 0; residual(hi) < 0.0; ++k, width *= 2.0)
+        {
+            if (k == 2000) throw std::runtime_error("riser::HistoryStepper: no bracket for the step");
+            hi = a_ + width;
+        }
+        for (int k = 0; k < 200 && hi - lo > 1e-15*(std::abs(lo) + std::abs(hi)); ++k)
+        {
+            const double mid = 0.5*(lo + hi);
+            (residual(mid) < 0.0 ? lo : hi) = mid;
+        }
+        return 0.5*(lo + hi);
+    }
     template<class V> static double norm(const V& x) { return x.norm(); }
 
     //- m dv/dt = F + m_A (Du/Dt - dv/dt) at t0, without the history term
