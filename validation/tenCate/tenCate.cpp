@@ -11,7 +11,7 @@
 //
 // What is compared, and with what:
 // - The fastest descent against the published terminal speeds u_inf =
-//   0.038, 0.060, 0.091, 0.128 m/s. These are the terminal speeds of a
+//   0.038, 0.060, 0.091, 0.128 m/s. They match the terminal speeds of a
 //   sphere in an unbounded liquid: Abraham's (1970) drag coefficient
 //   C_D = 24/9.06^2 (1 + 9.06/sqrt(Re))^2 gives all four to within their
 //   rounding (the program prints it), while the box's side walls, 3.3 d from
