@@ -102,21 +102,6 @@ double cliftGraceWeberCD(double Re)
     return 24.0/Re*(1.0 + 0.1935*std::pow(Re, 0.6305));
 }
 
-//- Terminal speed of the model's drag law in a pipe of diameter ratio
-//  d/D = a on its axis (the library's pipe wall factors)
-double pipeTerminalSpeed(const Scene& s, double a)
-{
-    const WallFactors pipe(a);
-    double lo = 0.0, hi = 10.0;
-    for (int i = 0; i < 200; ++i)
-    {
-        const double V = 0.5*(lo + hi);
-        (dragFactor(DragLaw::continuous, pipe, s.d, s.mu, s.reynolds(V))*V
-             < (s.mp() - s.mf())*s.g ? lo : hi) = V;
-    }
-    return 0.5*(lo + hi);
-}
-
 //- The samples (every 1 ms) for 0.6 s from a gap of 5 mm, every 20th of
 //  them elsewhere
 void writeCurve(const Run& r, const std::string& file)
@@ -163,7 +148,7 @@ int main(int argc, char* argv[])
     {
         const Scene s = tenCateScene(oil);
         const double uA = terminalSpeed(s, abrahamCD), uS = terminalSpeed(s, cliftGraceWeberCD);
-        const double uM = validation::terminalSpeed(s), uP = pipeTerminalSpeed(s, s.d/box);
+        const double uM = validation::terminalSpeed(s), uP = validation::terminalSpeed(s, s.d/box);
         say("%-4s %6.2f %7.2f %8.3f %9.4f %9.4f %9.4f %+8.1f%% %9.4f\n", oil.name,
             s.reynolds(oil.uInf), s.stokes(oil.uInf), oil.uInf, uA, uS, uM,
             100.0*(uM/oil.uInf - 1.0), uP);
