@@ -194,7 +194,8 @@ struct StiffDrag
 // a scalar step solves its monotone equation by bisection and lands on the
 // trapezoidal rule's closed form to round-off (1e-12 relative over 20
 // steps, each step's bisection to 1e-15); a vector step throws rather than
-// keep an unconverged acceleration.
+// keep an unconverged acceleration, and so does a scalar step whose force
+// is not a number.
 TEST(BassetMotion, StiffForceIsSolvedOrRefused)
 {
     const double m = 1e-3, c = 10.0, h = 1e-2, q = c*h/(2.0*m);
@@ -211,4 +212,8 @@ TEST(BassetMotion, StiffForceIsSolvedOrRefused)
     HistoryStepper<StiffDrag<Eigen::Vector3d>> vector
         (vectorLaw, HistoryMethod::windowTail, h, 2, Eigen::Vector3d(1.0, 0.0, 0.0));
     EXPECT_THROW(vector.step(), std::runtime_error);
+    // a force that is not a number is refused, not stepped
+    const StiffDrag<double> nanLaw{m, std::nan("")};
+    HistoryStepper<StiffDrag<double>> nanStepper(nanLaw, HistoryMethod::windowTail, h, 2, 1.0);
+    EXPECT_THROW(nanStepper.step(), std::runtime_error);
 }

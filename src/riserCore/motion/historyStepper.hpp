@@ -146,6 +146,10 @@ private:
             if (k == 2000) throw std::runtime_error("riser::HistoryStepper: no bracket for the step");
             hi = a_ + width;
         }
+        if (!(residual(lo) <= 0.0 && residual(hi) >= 0.0))
+        {
+            throw std::runtime_error("riser::HistoryStepper: the step's force is not a number");
+        }
         for (int k = 0; k < 200 && hi - lo > 1e-15*(std::abs(lo) + std::abs(hi)); ++k)
         {
             const double mid = 0.5*(lo + hi);
