@@ -15,7 +15,7 @@
 //   sphere in an unbounded liquid: Abraham's (1970) drag coefficient
 //   C_D = 24/9.06^2 (1 + 9.06/sqrt(Re))^2 gives all four to within their
 //   rounding (the program prints it), while the box's side walls, 3.3 d from
-//   the sphere's centre, would slow it by 13–20 % if they acted as a pipe's
+//   the sphere's centre, would slow it by 14–26 % if they acted as a pipe's
 //   (the library's pipe wall factors at d/D = 0.15, also printed). So the
 //   confinement correction used is none, and the model's sphere is
 //   unbounded as well. The model's terminal speed is also set against the
