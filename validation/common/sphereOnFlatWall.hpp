@@ -242,20 +242,30 @@ inline double dryRestitution(const Scene& s, double v, double h)
     return NAN;
 }
 
+//- The speed V at which drag(V), the drag force at speed V (growing with
+//  V), carries the weight less the buoyancy, (m_p - m_f) g: by bisection
+template<class Drag>
+double terminalSpeedOf(const Scene& s, Drag drag)
+{
+    double lo = 0.0, hi = 10.0;
+    for (int i = 0; i < 200; ++i)
+    {
+        const double V = 0.5*(lo + hi);
+        (drag(V) < (s.mp() - s.mf())*s.g ? lo : hi) = V;
+    }
+    return 0.5*(lo + hi);
+}
+
 //- Terminal speed of the model's drag law, c(Re) V = (m_p - m_f) g, by
 //  bisection: unbounded (dOverD = 0) or on the axis of a pipe of diameter
 //  ratio d/D (the library's pipe wall factors)
 inline double terminalSpeed(const Scene& s, double dOverD = 0.0)
 {
     const WallFactors walls(dOverD);
-    double lo = 0.0, hi = 10.0;
-    for (int i = 0; i < 200; ++i)
+    return terminalSpeedOf(s, [&](double V)
     {
-        const double V = 0.5*(lo + hi);
-        (dragFactor(DragLaw::continuous, walls, s.d, s.mu, s.reynolds(V))*V
-             < (s.mp() - s.mf())*s.g ? lo : hi) = V;
-    }
-    return 0.5*(lo + hi);
+        return dragFactor(DragLaw::continuous, walls, s.d, s.mu, s.reynolds(V))*V;
+    });
 }
 
 } // namespace validation

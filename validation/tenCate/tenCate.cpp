@@ -47,7 +47,6 @@
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "sphereOnFlatWall.hpp"
 
-#include <functional>
 
 using namespace validation;
 
@@ -69,18 +68,14 @@ Scene tenCateScene(const Oil& oil)
             {63e9, 0.23}};      // glass (assumed)
 }
 
-//- Terminal speed of drag coefficient C_D(Re): C_D V^2 = 4 (rho_p - rho_f)
-//  g d/(3 rho_f), by bisection (C_D V^2 grows with V for these curves)
-double terminalSpeed(const Scene& s, const std::function<double(double)>& CD)
+//- Terminal speed of drag coefficient C_D(Re): the drag C_D (pi/8) rho_f
+//  d^2 V^2 (growing with V for these curves) carries the weight
+double terminalSpeed(const Scene& s, double (*CD)(double))
 {
-    const double target = 4.0*(s.rhoP - s.rhoF)*s.g*s.d/(3.0*s.rhoF);
-    double lo = 1e-9, hi = 10.0;
-    for (int i = 0; i < 200; ++i)
+    return terminalSpeedOf(s, [&](double V)
     {
-        const double V = 0.5*(lo + hi);
-        (CD(s.reynolds(V))*V*V < target ? lo : hi) = V;
-    }
-    return 0.5*(lo + hi);
+        return V > 0.0 ? CD(s.reynolds(V))*M_PI/8.0*s.rhoF*s.d*s.d*V*V : 0.0;
+    });
 }
 
 //- Abraham, Phys. Fluids 13, 2194 (1970)
