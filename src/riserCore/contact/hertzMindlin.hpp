@@ -189,6 +189,10 @@ public:
     //- The liquid film before and after a contact (lubricated)?
     const std::optional<LubricationFilm>& film() const { return film_; }
 
+    //- The film's cut-off gap for R* (0 when dry): how far beyond touch
+    //  the law still acts
+    double filmGap(double R) const { return film_ ? film_->cutoffGap(R) : 0.0; }
+
     //- The dry restitution e_n
     double dryRestitution() const { return eDry_; }
 

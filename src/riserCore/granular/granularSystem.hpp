@@ -645,8 +645,7 @@ private:
         if (n < 2 && preset_.empty() && list_.empty()) return;  // no pair
         // lubricated: a pair is listed while in each other's film too
         // (R* of two radii up to R_max is at most R_max/2)
-        const auto& film = pairLaw_->film();
-        const double cutoff = 2.0*rMax + skinLength_ + (film ? film->cutoffGap(0.5*rMax) : 0.0);
+        const double cutoff = 2.0*rMax + skinLength_ + pairLaw_->filmGap(0.5*rMax);
         // the contacts in progress (those handed over not yet evaluated)
         std::unordered_map<std::uint64_t, Candidate> kept;
         for (const auto& p : preset_)
@@ -668,8 +667,7 @@ private:
         pairs_.forEachPair(positions_, cutoff, [&](std::size_t i, std::size_t j, double dz)
         {
             const double Ri = grains_[i].radius, Rj = grains_[j].radius;
-            const double reach =
-                Ri + Rj + skinLength_ + (film ? film->cutoffGap(Ri*Rj/(Ri + Rj)) : 0.0);
+            const double reach = Ri + Rj + skinLength_ + pairLaw_->filmGap(Ri*Rj/(Ri + Rj));
             if ((positions_[j] + Vector(0.0, 0.0, dz) - positions_[i]).squaredNorm() > reach*reach)
             {
                 return;

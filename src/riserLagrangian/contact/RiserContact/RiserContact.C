@@ -69,7 +69,7 @@ void Foam::RiserContact<CloudType>::wetContact
 template<class CloudType>
 Foam::scalar Foam::RiserContact<CloudType>::wallFilmGap(const scalar R) const
 {
-    return wallLaw_.valid() && wallLaw_->film() ? wallLaw_->film()->cutoffGap(R) : 0;
+    return wallLaw_.valid() ? wallLaw_->filmGap(R) : 0;
 }
 
 
@@ -82,7 +82,7 @@ Foam::scalar Foam::RiserContact<CloudType>::pairReach
 {
     return
         reach_
-      + (pairLaw_->film() ? pairLaw_->film()->cutoffGap(Ra*Rb/(Ra + Rb)) : 0);
+      + pairLaw_->filmGap(Ra*Rb/(Ra + Rb));
 }
 
 
@@ -92,7 +92,7 @@ Foam::scalar Foam::RiserContact<CloudType>::pairCutoff() const
     // (R* of two radii up to R_max is at most R_max/2)
     return
         2*radiusMax_ + reach_ + SMALL
-      + (pairLaw_->film() ? pairLaw_->film()->cutoffGap(0.5*radiusMax_) : 0);
+      + pairLaw_->filmGap(0.5*radiusMax_);
 }
 
 
