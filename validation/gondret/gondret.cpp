@@ -239,9 +239,11 @@ int main(int argc, char* argv[])
         for (size_t c = 0; c < runs[k].contacts.size() && c < 6; ++c)
         {
             const Contact& C = runs[k].contacts[c];
-            say("  %zu: t = %.4f s, v_in = %.4f m/s, St = %5.1f, v_out = %.4f m/s, e = %.4f, %.1f us\n",
-                c + 1, C.tTouch - runs[k].t0(), -C.vTouch, stokes(C.vTouch), C.vLeave,
-                -C.vLeave/C.vTouch, (C.tLeave - C.tTouch)*1e6);
+            say("  %zu: t = %.4f s, v_in = %.4f m/s, St = %5.1f, ", c + 1, C.tTouch - runs[k].t0(),
+                -C.vTouch, stokes(C.vTouch));
+            if (std::isnan(C.tLeave)) say("stays on the wall\n");
+            else say("v_out = %.4f m/s, e = %.4f, %.1f us\n", C.vLeave, -C.vLeave/C.vTouch,
+                     (C.tLeave - C.tTouch)*1e6);
         }
     }
 

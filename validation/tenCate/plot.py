@@ -1,6 +1,7 @@
 """Plot the ten Cate settling runs (tenCate's curves): the sphere's speed
-over its fall against the published terminal speed, and its gap near the
-bottom (no rebound when wet; the dry contact's rebound).
+over its fall against the published terminal speed and the measured maximum
+speed (read from the summary's section 3), and its gap near the bottom (no
+rebound when wet; the dry contact's rebound).
 
 usage: plot.py <results folder> <output png>
 SPDX-License-Identifier: GPL-3.0-or-later
@@ -20,6 +21,17 @@ styles = [("dry", "dry, Basset", "C3", "-"),
           ("film", "film, Basset", "C2", "--"),
           ("filmNoBasset", "film, no Basset", "C2", ":")]
 
+# measured maximum speeds [m/s], section 3 of the summary
+u_max = {}
+with open(f"{folder}/summary.txt") as f:
+    section3 = False
+    for line in f:
+        section3 = section3 or line.startswith("3. ")
+        words = line.split()
+        if section3 and words and words[0] in {o[0] for o in oils}:
+            u_max[words[0]] = float(words[2])
+assert len(u_max) == len(oils), f"no measured u_max for every oil in {folder}/summary.txt"
+
 fig, axes = plt.subplots(2, 4, figsize=(15, 7))
 for col, (oil, u_inf, Re) in enumerate(oils):
     top, bottom = axes[0, col], axes[1, col]
@@ -29,6 +41,8 @@ for col, (oil, u_inf, Re) in enumerate(oils):
         arrive = t[np.argmax(gap < 1e-3)]
         bottom.plot(t - arrive, gap * 1e3, color=colour, ls=ls, label=label)
     top.axhline(1.0, color="k", lw=0.8)
+    top.axhline(u_max[oil] / u_inf, color="k", lw=1.2, ls="--",
+                label="measured u_max" if col == 0 else None)
     top.set_xlim(125, -2)
     top.set_ylim(0, 1.2)
     top.set_title(f"{oil}: Re = {Re}, u_inf = {u_inf} m/s")
