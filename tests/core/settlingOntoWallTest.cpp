@@ -62,23 +62,3 @@ TEST(SettlingOntoWall, WetContactsStopTheSphereWithoutRebound)
     }
 }
 
-// The speed measured in the box is the sphere's maximum: u_max/u_inf =
-// 0.947 in E1 (Re 1.5) and 0.953 in E2 (Re 4.1) (ten Cate et al., Table 2),
-// times the published u_inf recomputed from Abraham's (1970) unbounded drag
-// coefficient (0.03829 and 0.05992 m/s): 0.0363 and 0.0571 m/s. With the
-// classical Basset force the model's sphere (unbounded, as the measured
-// u_max is within 5 % of the unbounded speed) still accelerates as t^-1/2
-// when it meets the bottom, and its fastest descent is within 5 % of u_max
-// (validation/tenCate: +3.0 and -1.1 %; the ratios carry about 1 % from the
-// oils' properties). Not at Re 11.6 and 31.9 (-6.2, -9.7 %): there the
-// classical kernel remembers too long, which this test does not cover.
-TEST(SettlingOntoWall, FastestDescentWithBassetMeetsTheMeasuredMaximumAtLowRe)
-{
-    struct Oil { double rhoF, mu, uInf, uMax; };
-    for (const Oil& o : {Oil{970.0, 0.373, 0.038, 0.947*0.03829},
-                         Oil{965.0, 0.212, 0.060, 0.953*0.05992}})
-    {
-        const validation::Run r = settle(oil(o.rhoF, o.mu), Wetness::dry, o.uInf);
-        EXPECT_NEAR(-r.vFastest/o.uMax, 1.0, 0.05) << "mu = " << o.mu;
-    }
-}
