@@ -61,4 +61,3 @@ TEST(SettlingOntoWall, WetContactsStopTheSphereWithoutRebound)
         }
     }
 }
-

@@ -25,11 +25,11 @@
 //   printed): the steady wall correction of a long pipe is not the box's, so
 //   the confinement correction used is none, and the model's sphere is
 //   unbounded. Against the standard curve's unbounded terminal speed the
-//   measured u_max is 12, 10, 5 and 2 % lower (printed),
-//   a deficit that falls with Re as a wall effect's does (it reaches
-//   farther at low Re), where Abraham's coefficient hides it. The classical
-//   Basset force's lag behind the terminal speed grows with Re instead, so
-//   the model with it agreeing at low Re is not evidence for its kernel.
+//   measured u_max is 12, 10, 5 and 2 % lower (printed), a deficit that
+//   falls with Re as a wall effect's does (it reaches farther at low Re),
+//   where Abraham's coefficient hides it. The classical Basset force's lag
+//   behind the terminal speed grows with Re instead, so the model with it
+//   agreeing at low Re is not evidence for its kernel.
 // - The approach to the bottom: no rebound. The sphere must not leave the
 //   bottom after it reaches it: the highest upward speed after the fastest
 //   descent and the highest gap after the first touch are printed, and for
@@ -43,12 +43,12 @@
 // the model; the arrival's last millimetre is not compared.
 //
 // Numbers and their sources (ten Cate et al., Phys. Fluids 14, 4012, 2002,
-// Tables 1 and 2): sphere 15 mm, 1120 kg/m^3; oils rho_f = 970, 965, 962, 960
-// kg/m^3, mu = 0.373, 0.212, 0.113, 0.058 Pa s; u_inf and u_max/u_inf as
-// above; release
-// with the sphere's bottom 120 mm above the box's bottom. Assumed: nylon
-// (E = 3 GPa, nu = 0.4), glass bottom (E = 63 GPa, nu = 0.23) and
-// e_dry = 0.9; they set the contact time and the dry run's rebound only.
+// Tables 1 and 2): sphere 15 mm, 1120 kg/m^3; oils rho_f = 970, 965, 962,
+// 960 kg/m^3, mu = 0.373, 0.212, 0.113, 0.058 Pa s; u_inf and u_max/u_inf as
+// above; release with the sphere's bottom 120 mm above the box's bottom.
+// Assumed: nylon (E = 3 GPa, nu = 0.4), glass bottom (E = 63 GPa, nu =
+// 0.23) and e_dry = 0.9; they set the contact time and the dry run's rebound
+// only.
 //
 // usage: tenCate <output folder>
 // writes <output folder>/curve_<oil>_<variant>.dat (t from release, gap,
@@ -223,9 +223,9 @@ int main(int argc, char* argv[])
         const Oil& oil = oils[k];
         const Scene s = tenCateScene(oil);
         const double uMax = oil.uMaxRatio*terminalSpeed(s, abrahamCD);
-        say("%-4s %9.3f %9.4f %9.3f %9.4f %+7.1f%% %9.4f %+7.1f%%\n", oil.name, oil.uMaxRatio, uMax,
-            uMax/terminalSpeed(s, cliftGraceWeberCD), vMaxBasset[k], 100.0*(vMaxBasset[k]/uMax - 1.0), vMaxNoBasset[k],
-            100.0*(vMaxNoBasset[k]/uMax - 1.0));
+        say("%-4s %9.3f %9.4f %9.3f %9.4f %+7.1f%% %9.4f %+7.1f%%\n", oil.name, oil.uMaxRatio,
+            uMax, uMax/terminalSpeed(s, cliftGraceWeberCD), vMaxBasset[k],
+            100.0*(vMaxBasset[k]/uMax - 1.0), vMaxNoBasset[k], 100.0*(vMaxNoBasset[k]/uMax - 1.0));
     }
     say("  u_max/u: measured (ten Cate et al., Table 2); u_max: that times Abraham's u_inf;"
         " /CGW1978: u_max over the standard curve's unbounded terminal speed;\n"
