@@ -100,7 +100,8 @@ Usage
     constant/<cloud>Properties: the riser cloud's dictionary (as for
     riserParcelFoam), with in its solution dictionary coupled true for a
     two-way run and the semi-implicit source scheme for U
-    (sourceTerms { schemes { U semiImplicit 1; } }; explicit is refused),
+    (sourceTerms { schemes { U semiImplicit 1; } }; explicit, or a
+    coefficient other than 1, which relaxes the reaction, is refused),
     and in
     constantProperties
     \verbatim

@@ -41,6 +41,8 @@ public:
     double phase() const { return phi0_; }
     //- The largest speed of the riser, A omega
     double maxSpeed() const { return A_*omega_; }
+    //- The largest acceleration of the riser, A omega^2
+    double maxAcceleration() const { return A_*omega_*omega_; }
 
     //- Axis position x_c(t) (the axis passes through (x_c, 0, z))
     double axisPosition(double t) const { return A_*std::sin(omega_*t + phi0_); }

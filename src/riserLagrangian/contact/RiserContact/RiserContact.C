@@ -133,6 +133,15 @@ Foam::scalar Foam::RiserContact<CloudType>::effectiveMass
 }
 
 
+template<class CloudType>
+Foam::scalar Foam::RiserContact<CloudType>::bodyAccelerationBound() const
+{
+    return
+        mag(this->owner().g().value())
+      + 2*riser_.flow().motion().maxAcceleration();
+}
+
+
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
 template<class CloudType>
@@ -377,6 +386,14 @@ Foam::label Foam::RiserContact<CloudType>::nSubCycles() const
         Info<< "    riserContact: " << nNear << " particle(s) near "
             << (pairLaw_.valid() ? "a contact" : "the wall") << endl;
     }
+    const label deferred = returnReduce(deferredContacts_, sumOp<label>());
+    if (deferred)
+    {
+        Info<< "    riserContact: " << deferred << " wall contact(s) begun"
+            << " in the last step, which their plan did not foresee, left"
+            << " to this step's sub-cycles" << endl;
+    }
+    deferredContacts_ = 0;
     if (pairLaw_.valid())
     {
         Info<< "    riserContact: largest pair overlap in this run "
@@ -384,6 +401,23 @@ Foam::label Foam::RiserContact<CloudType>::nSubCycles() const
             << " of the smaller diameter" << endl;
     }
     return nSub;
+}
+
+
+template<class CloudType>
+bool Foam::RiserContact<CloudType>::unresolvedStart
+(
+    const parcelType& p,
+    const riser::ContactBody& body,
+    const scalar vn,
+    const scalar dt
+) const
+{
+    // (the plan gives a contact it foresees stepsPerContact sub-cycles of
+    // its contact time at a speed at least vn; the factor 2 leaves those)
+    return
+        need(p).n == 0
+     && stepsPerContact_*dt > 2*wallLaw_->contactTime(body, max(mag(vn), SMALL));
 }
 
 
@@ -689,6 +723,29 @@ void Foam::RiserContact<CloudType>::collide()
             wallContactEnds(p, trace, t, p.U() - Uwall, n, spin);
             addContactTrace(p, trace);
             // no record accessed: update() below drops the tangential spring
+            continue;
+        }
+
+        if (!event && unresolvedStart(p, body, (p.U() - Uwall) & n, dt))
+        {
+            // a contact the plan did not foresee, beginning in a step too
+            // long for it. The riser cloud leaves it to the next step,
+            // whose plan sub-cycles it from this overlap (its start a
+            // fraction of a step late); a stock cloud's sub-cycles are
+            // those of the whole cloud, planned for the step: refused
+            if (!riserCloud)
+            {
+                FatalErrorInFunction
+                    << "particle " << p.origId() << " (processor "
+                    << p.origProc() << ") at " << p.position() << " began"
+                    << " a wall contact at t = " << t << " (overlap "
+                    << overlap << " m, normal speed "
+                    << mag((p.U() - Uwall) & n) << " m/s) in a collision"
+                    << " step of " << dt << " s, too long to resolve it,"
+                    << " which the step's plan did not foresee; reduce"
+                    << " deltaT" << exit(FatalError);
+            }
+            ++deferredContacts_;
             continue;
         }
 

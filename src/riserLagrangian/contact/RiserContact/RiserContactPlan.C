@@ -101,11 +101,16 @@ Foam::label Foam::RiserContact<CloudType>::nearWallSubCycles
             << flow.diameter() << " (constant/riserProperties)"
             << exit(FatalError);
     }
-    const scalar speed = mag(p.U()) + flow.motion().maxSpeed();
     if (!wallLaw_.valid())
     {
         return 0;
     }
+    // the largest speed of approach within the step: the particle's and
+    // the wall's now, and what the body forces can add over the step (a
+    // particle at rest beside the wall reaches it in a step by its
+    // acceleration alone)
+    const scalar speed =
+        mag(p.U()) + flow.motion().maxSpeed() + bodyAccelerationBound()*dt;
     // lubricated: a particle that may be in the wall's film within the
     // step is sub-cycled as one that may touch, so that its step changes
     // where the film is weak (at its cut-off), not near touch, where a
@@ -290,8 +295,11 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
     // within a step a contact can speed a particle up to about twice the
     // fastest particle's speed, so a pair may close by 4 U_max dt: a reach
     // from each pair's own speeds would miss a resting particle struck by
-    // a neighbour and left to overlap the next
-    reach_ = 4*uMax*dt;
+    // a neighbour and left to overlap the next; and the body forces can
+    // change two particles' velocities by up to 2 a_b dt each way apart
+    // (particles at rest released side by side settle at different speeds)
+    const scalar pairSpeedGain = 2*bodyAccelerationBound()*dt;
+    reach_ = (4*uMax + pairSpeedGain)*dt;
     radiusMax_ = rMax;
     const scalar cutoff = pairCutoff();
 
@@ -381,7 +389,8 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
                 << exit(FatalError);
         }
         // the largest impact speed the pair can reach in the step
-        const scalar speed = max(mag(U[p]) + mag(U[q]), 2*uMax);
+        const scalar speed =
+            max(mag(U[p]) + mag(U[q]), 2*uMax) + pairSpeedGain;
         const riser::ContactBody body = riser::pairBody(0.5*D[p], M[p], 0.5*D[q], M[q]);
         const scalar tc = pairLaw_->contactTime(body, max(speed, SMALL));
         const scalar needed = ceil(stepsPerContact_*dt/tc);
