@@ -105,6 +105,13 @@ expect("U explicit (the reaction needs its semi-implicit split)",
        "entry 'sourceTerms { schemes { U ... } }' = explicit",
        lambda case: (cloud("coupled +false;", "coupled true;")(case),
                      cloud(r"U semiImplicit 1;", "U explicit 1;")(case)), io=True)
+# a coefficient other than 1 relaxes the reaction toward the previous
+# step's: the carrier would take a fraction of what the particles feel
+for c in ("0.5", "0", "-1", "2", "1e300"):
+    expect("U semiImplicit %s (the reaction relaxed)" % c,
+           "entry 'sourceTerms { schemes { U semiImplicit %s; } }'" % ("1e+300" if c == "1e300" else c),
+           lambda case, c=c: (cloud("coupled +false;", "coupled true;")(case),
+                              cloud(r"U semiImplicit 1;", "U semiImplicit %s;" % c)(case)), io=True)
 expect("voidage in a one-way run (its carrier is not displaced)",
        "entry 'voidage' = wenYu: the cloud is not coupled (coupled false)",
        cloud(r"wallCorrectedDrag \{ law continuous; \}",

@@ -105,18 +105,18 @@ Foam::label Foam::RiserContact<CloudType>::nearWallSubCycles
     {
         return 0;
     }
-    // the largest speed of approach within the step: the particle's and
-    // the wall's now, and what the body forces can add over the step (a
-    // particle at rest beside the wall reaches it in a step by its
-    // acceleration alone)
-    const scalar speed =
-        mag(p.U()) + flow.motion().maxSpeed() + bodyAccelerationBound()*dt;
+    // the particle's speed toward the wall now, at most, and what the body
+    // forces can add over the step: a particle at rest beside the wall
+    // reaches it in a step by its acceleration alone
+    const scalar speed0 = mag(p.U()) + flow.motion().maxSpeed();
+    const scalar aBody = bodyAccelerationBound();
     // lubricated: a particle that may be in the wall's film within the
     // step is sub-cycled as one that may touch, so that its step changes
     // where the film is weak (at its cut-off), not near touch, where a
     // changed step would cost part of an evaluation's impulse
     // (riserCore's contactKernel.hpp)
-    const scalar reach = speed*dt + wallFilmGap(0.5*p.d());
+    const scalar reach =
+        speed0*dt + 0.5*aBody*sqr(dt) + wallFilmGap(0.5*p.d());
     if (clearOfWall(p, axisOffset, reach))
     {
         return 0;
@@ -138,8 +138,13 @@ Foam::label Foam::RiserContact<CloudType>::nearWallSubCycles
     {
         return 0;
     }
+    // at the largest impact speed within the step: over the distance s it
+    // can close toward the wall, the body forces raise the speed of
+    // approach v to at most sqrt(v0^2 + 2 a_b s)
+    const scalar closing = min(max(gap, scalar(0)), speed0*dt + 0.5*aBody*sqr(dt));
+    const scalar impactSpeed = sqrt(sqr(speed0) + 2*aBody*closing);
     const riser::ContactBody body(0.5*p.d(), effectiveMass(p));
-    const scalar tc = wallLaw_->contactTime(body, max(speed, SMALL));
+    const scalar tc = wallLaw_->contactTime(body, max(impactSpeed, SMALL));
     // as a scalar first: no overflow of the label
     const scalar needed = ceil(stepsPerContact_*dt/tc);
     checkNeeded
@@ -296,10 +301,11 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
     // fastest particle's speed, so a pair may close by 4 U_max dt: a reach
     // from each pair's own speeds would miss a resting particle struck by
     // a neighbour and left to overlap the next; and the body forces can
-    // change two particles' velocities by up to 2 a_b dt each way apart
-    // (particles at rest released side by side settle at different speeds)
+    // change two particles' relative velocity by up to 2 a_b dt over the
+    // step, their gap by a_b dt^2 (particles at rest released side by
+    // side settle at different speeds)
     const scalar pairSpeedGain = 2*bodyAccelerationBound()*dt;
-    reach_ = (4*uMax + pairSpeedGain)*dt;
+    reach_ = (4*uMax + 0.5*pairSpeedGain)*dt;
     radiusMax_ = rMax;
     const scalar cutoff = pairCutoff();
 
