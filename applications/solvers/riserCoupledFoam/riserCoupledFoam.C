@@ -166,6 +166,8 @@ Usage
 #include "coreVector.H"
 #include "particleCoupling.H"
 
+#include "caseDictionaries.H"
+
 #include <fstream>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -187,6 +189,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    caseDictionaries::checkNumbers(runTime);
     #include "checkStartTime.H"
     #include "createDynamicFvMesh.H"
     #include "createFields.H"

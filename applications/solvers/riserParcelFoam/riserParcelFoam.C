@@ -54,6 +54,8 @@ Usage
 #include "modelEntries.H"
 #include "coreVector.H"
 
+#include "caseDictionaries.H"
+
 #include <fstream>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
@@ -74,6 +76,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCaseLists.H"
     #include "createTime.H"
+    caseDictionaries::checkNumbers(runTime);
     #include "checkStartTime.H"
     #include "createDynamicFvMesh.H"
     #include "createFields.H"

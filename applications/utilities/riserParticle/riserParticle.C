@@ -81,6 +81,7 @@ Usage
 #include "argList.H"
 #include "sigFpe.H"
 #include "riserParticleJobs.H"
+#include "caseDictionaries.H"
 
 #include <stdexcept>
 
@@ -107,6 +108,7 @@ int main(int argc, char *argv[])
 
     #include "setRootCase.H"
     #include "createTime.H"
+    caseDictionaries::checkNumbers(runTime);
 
     const riserScene scene = readScene(runTime);
     const integratorChoice integ = readIntegrator(runTime, args, scene);

@@ -104,6 +104,36 @@ Foam::scalar Foam::particleKernel::largestDiameter(const CloudType& cloud)
 
 
 template<class CloudType>
+void Foam::particleKernel::checkOneCellDeposits(const CloudType& cloud) const
+{
+    if (type_ != kernelType::none)
+    {
+        return;
+    }
+    const scalarField& V = mesh_.V().field();
+    for (const auto& p : cloud)
+    {
+        const scalar volume = p.nParticle()*p.volume();
+        if (volume > V[p.cell()])
+        {
+            FatalIOErrorInFunction(dict_)
+                << "entry 'type' = none: the particle " << p.origId()
+                << " of processor " << p.origProc() << " (d = " << p.d()
+                << " m, " << p.nParticle() << " in its parcel) at "
+                << p.position() << " is " << volume << " m^3, more than its"
+                << " cell " << p.cell() << " (" << V[p.cell()] << " m^3):"
+                << " the one-cell deposit would put its whole volume and"
+                << " reaction in that cell and drag the cell's carrier"
+                << " alone (the forces then grow and change sign from step"
+                << " to step). Spread them over a few diameters with" << nl
+                << "    kernel { type diffusion; width 3; widthUnit diameters; }"
+                << nl << exit(FatalIOError);
+        }
+    }
+}
+
+
+template<class CloudType>
 Foam::tmp<Foam::volScalarField> Foam::particleKernel::alphac
 (
     const CloudType& cloud,
