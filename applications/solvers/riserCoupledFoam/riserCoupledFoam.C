@@ -164,9 +164,11 @@ Usage
 #include "riserDrive.H"
 #include "modelEntries.H"
 #include "coreVector.H"
+#include "foamVtkSeriesWriter.H"
 #include "particleCoupling.H"
 
 #include <fstream>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

@@ -53,8 +53,10 @@ Usage
 #include "carrierFlow.H"
 #include "modelEntries.H"
 #include "coreVector.H"
+#include "foamVtkSeriesWriter.H"
 
 #include <fstream>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
