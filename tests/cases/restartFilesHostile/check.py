@@ -3,6 +3,7 @@ import json
 import os
 import re
 import shutil
+import subprocess
 
 import numpy as np
 
@@ -10,6 +11,7 @@ from riserfoam import cases, foamfields as ff
 from riserfoam.checks import Checks
 
 checks = Checks()
+here = os.path.dirname(os.path.abspath(__file__))
 MID, LATE, END, STEP = "0.007", "0.008", "0.009", "0.001"
 CLOUD = "lagrangian/kinematicCloud"
 SERIES = "postProcessing/vtkCloud/kinematicCloud.vtp.series"
@@ -264,4 +266,64 @@ os.remove(os.path.join(partial, MID, CLOUD, "historyTail"))
 refused("coldInPart: historyTail alone removed", partial,
         ["Time %s of " % MID, "is incomplete: file %s/historyTail of time %s is missing"
          % (CLOUD, ("%g" % (float(MID) - float(STEP))))])
+
+# ------------------------------- escaped: contacts with ores that left
+# an open riser (oreCase.sh: D = 0.1 m, L = 0.2 m, the ends open, ores
+# escaping through them) filled at C_v = 0.2 with soft 8-12 mm ores, the
+# carrier at 3 m/s carrying them out of the outlet, some in contact
+escaped = os.path.abspath("escaped")
+ESCAPE_END = "0.01"
+subprocess.run(["bash", "-c", """
+. "$1/oreCase.sh"
+ore_case "$2" 6 'D 0.1; uCentre 3; A 0; f 0; carrier exact; frame riser;' \
+    'wallCorrectedDrag { law paper; } riserAddedMass { CA 0.5; } riserFluidStress; gravity;' \
+    'type riserFill; solidsFraction 0.2; seed 1; velocity carrier; gap 1e-4;
+     sizeDistribution { type uniform; uniformDistribution { minValue 0.008; maxValue 0.012; } }' open
+""", "-", os.path.join(here, ".."), escaped], check=True)
+props = os.path.join(escaped, "constant", "kinematicCloudProperties")
+for entry, value in (("constantProperties/youngsModulus", "1e7"),
+                     ("subModels/riserContactCoeffs/stepsPerContact", "10"),
+                     ("subModels/riserContactCoeffs/aloneAtWall", "meshFree"),
+                     ("subModels/riserContactCoeffs/pairs",
+                      "{ normalRestitution 0.5; tangentialRestitution 0.5; friction 0.3; }"),
+                     ("cloudFunctions", "{}")):
+    ff.set_nested(props, entry, value)
+for entry, value in (("deltaT", "1e-4"), ("endTime", ESCAPE_END), ("writeControl", "timeStep"),
+                     ("writeInterval", "1"), ("writeFormat", "ascii"), ("writePrecision", "17")):
+    control(escaped, entry, value)
+ran, text = solve(escaped, "log.riserParcelFoam")
+# the steps (their end times) in which records were dropped
+dropped = re.findall(r"^Time = (\S+)\n(?:(?!^Time = ).*\n)*?.*record\(s\) with particles that"
+                     r" left the mesh dropped", text, re.M)
+ok(ran and dropped, "escaped: records with ores that left dropped in the steps to %s"
+   % ", ".join(dropped))
+dangling = []
+for time in sorted((t for t in os.listdir(escaped) if re.fullmatch(r"[0-9.e-]+", t)
+                    and os.path.exists(os.path.join(escaped, t, CLOUD, "origId"))), key=float):
+    folder = os.path.join(escaped, time, CLOUD)
+    present = set(ff.read_scalars(os.path.join(folder, "origId")))
+    dangling += [(time, o) for r in ff.read_lists(os.path.join(folder, PAIR_IDS))
+                 for o in r if o not in present]
+ok(not dangling, "escaped: every pair record of every written time names an ore of"
+                 " that time%s" % (": not %s" % dangling[:3] if dangling else ""))
+if ran and dropped:
+    restart = os.path.abspath("escapedRestart")
+    shutil.copytree(escaped, restart, ignore=lambda d, names: [
+        n for n in names if d == escaped and re.fullmatch(r"[0-9.e-]+", n)
+        and float(n) > float(dropped[0])])
+    control(restart, "startFrom", "latestTime")
+    ran, text = solve(restart, "log.restart")
+    ok(ran, "escapedRestart: restarted from %s s, right after the drop" % dropped[0])
+    if ran:
+        def state(case, field):
+            folder = os.path.join(case, ESCAPE_END, CLOUD)
+            order = np.argsort(ff.read_scalars(os.path.join(folder, "origId")))
+            return np.array(ff.read_vectors(os.path.join(folder, field)))[order]
+        for field, tol in (("positions", 1e-12), ("U", 1e-10)):
+            a, b = state(escaped, field), state(restart, field)
+            ok(a.shape == b.shape, "escapedRestart: %d ores at %s s, whole run %d"
+               % (len(b), ESCAPE_END, len(a)))
+            if a.shape == b.shape:
+                checks.near("escapedRestart: largest %s difference" % field,
+                            float(np.max(np.linalg.norm(a - b, axis=1))), 0.0, tol, 1.0)
 checks.exit()
