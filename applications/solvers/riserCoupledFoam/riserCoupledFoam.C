@@ -164,11 +164,13 @@ Usage
 #include "riserDrive.H"
 #include "modelEntries.H"
 #include "coreVector.H"
+#include "foamVtkSeriesWriter.H"
 #include "particleCoupling.H"
 
 #include "caseDictionaries.H"
 
 #include <fstream>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

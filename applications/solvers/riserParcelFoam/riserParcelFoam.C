@@ -53,10 +53,12 @@ Usage
 #include "carrierFlow.H"
 #include "modelEntries.H"
 #include "coreVector.H"
+#include "foamVtkSeriesWriter.H"
 
 #include "caseDictionaries.H"
 
 #include <fstream>
+#include <sstream>
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 

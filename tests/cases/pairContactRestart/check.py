@@ -52,12 +52,30 @@ kept = springs("split", SPLIT)
 if not re.search(r"\n1\(\(", kept):
     sys.exit("FAILED: no pair contact in progress at the restart time %s" % SPLIT)
 shutil.copytree("split", "forgotten")
+shutil.copytree("split", "lying")
 solve("split", END)
 
 # the same restart with the springs set to zero: the histories matter
 path = os.path.join("forgotten", SPLIT, "lagrangian", "kinematicCloud", "collisionRecordsPairData")
 open(path, "w").write(re.sub(r"\(\(([^()]*)\)\)", "((0 0 0))", kept))
 solve("forgotten", END)
+
+# the same restart with the first ore's record naming an ore that does not
+# exist: refused before the stock cloud reads the records, naming the file,
+# the ore and the rule
+path = os.path.join("lying", SPLIT, "lagrangian", "kinematicCloud",
+                    "collisionRecordsPairOrigIdOfOther")
+records = open(path).read()
+open(path, "w").write(re.sub(r"\n1\((\d+)\)\n", "\n1(9999)\n", records, count=1))
+foamfields.set_entry(os.path.join("lying", "system/controlDict"), "endTime", END)
+lying = cases.run(["icoUncoupledKinematicParcelFoam", "-case", "lying"],
+                  os.path.join("lying", "log.solver." + END), may_fail=True)
+refusal = open(os.path.join("lying", "log.solver." + END)).read()
+expected = ("particle 0 (origProcId 0, origId 0) of", "collisionRecordsPairOrigIdOfOther",
+            "with the particle (origProcId 0, origId 9999), which is not in the cloud")
+lyingRefused = lying is None and all(t in refusal for t in expected)
+print("a record naming the ore 9999 (there are 2), refused: %s"
+      % ("yes" if lyingRefused else "NO"))
 
 restarted = difference(velocities("whole"), velocities("split"))
 forgotten = difference(velocities("whole"), velocities("forgotten"))
@@ -69,6 +87,10 @@ if not restarted < 1e-9:
     failures += 1
 if not forgotten > 1e-4:
     print("FAILED: forgetting the springs changes the result by less than 1e-4: the check is blind")
+    failures += 1
+if not lyingRefused:
+    print("FAILED: the restart with a record naming a missing ore was not refused as"
+          " expected:\n" + refusal[-1500:])
     failures += 1
 print("%d check(s) failed" % failures)
 sys.exit(1 if failures else 0)

@@ -245,6 +245,12 @@ Foam::RiserContact<CloudType>::RiserContact
         // the riser cloud moves its particles by the needs of this model
         this->announce(&owner);
     }
+    else
+    {
+        // the contact records of a restart, before the stock cloud reads
+        // them (the riser cloud's parcel checks its own)
+        contactRecords::check(owner);
+    }
 
     Info<< "    riserContact: wall contact ";
     if (wallLaw_.valid())
@@ -790,10 +796,25 @@ void Foam::RiserContact<CloudType>::collide()
     {
         collidePairs();
     }
-    // drop the springs of the contacts that were not touched (ended)
+    // drop the springs of the contacts that were not touched (ended), and
+    // the pair contacts in progress with them
     for (parcelType& p : this->owner())
     {
         p.collisionRecords().update();
+        if (contactsInProgress* carried = carriedContacts(p))
+        {
+            carried->keepPairs
+            (
+                [&p](const labelPair& other)
+                {
+                    return
+                        p.collisionRecords().checkPairRecord
+                        (
+                            other.first(), other.second()
+                        );
+                }
+            );
+        }
     }
 }
 

@@ -10,6 +10,7 @@
 #include "vectorFieldIOField.H"
 #include "scalarFieldIOField.H"
 #include "OStringStream.H"
+#include "contactRecords.H"
 
 #include <cmath>
 
@@ -166,6 +167,9 @@ void Foam::HistoryParcel<ParcelType>::readFields(CloudType& c)
                 << exit(FatalError);
         }
     }
+
+    // the contact records, checked before the stock reading takes them
+    contactRecords::check(c);
 
     checkPlaces(c);
 

@@ -7,6 +7,11 @@
 #include "boundBox.H"
 #include "coreVector.H"
 #include "granular/nearPairs.hpp"
+#include "IStringStream.H"
+#include "OStringStream.H"
+
+#include <algorithm>
+#include <sstream>
 
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
@@ -160,10 +165,117 @@ void Foam::RiserFillInjection<CloudType>::fill()
     }
     this->volumeTotal_ = placed;
 
+    // what a restart after the fill checks its entries against (on one
+    // line, numbers to 15 digits as compared there)
+    OStringStream entries;
+    entries.precision(15);
+    dict.write(entries, false);
+    std::string line = entries.str();
+    std::replace(line.begin(), line.end(), '\n', ' ');
+    this->setModelProperty("fillEntries", string(line));
+    this->setModelProperty("fillOres", places.size());
+    this->setModelProperty("fillSolidsFraction", placed/V);
+
     Info<< "    riserFill: placed " << places.size() << " ores, solids"
         << " fraction C_v = " << placed/V << " (requested " << Cv
         << ") in the " << (periodic ? "periodic " : "") << "riser section of"
         << " length " << L << " m and volume " << V << " m^3" << endl;
+}
+
+
+template<class CloudType>
+void Foam::RiserFillInjection<CloudType>::checkFillMade() const
+{
+    const dictionary& dict = this->coeffDict();
+    const Time& time = this->owner().db().time();
+    const fileName record = this->owner().outputProperties().objectPath();
+    const string stored = this->template getModelProperty<string>("fillEntries", string());
+    if (stored.empty())
+    {
+        const scalar added =
+            this->template getModelProperty<scalar>("parcelsAddedTotal", 0);
+        if (added <= 0)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry 'SOI' = " << this->SOI_ << ": the fill is made in"
+                << " the step that holds SOI, before the start time "
+                << time.timeName() << ", and the run that wrote "
+                << time.timeName() << " made none (no parcels added by"
+                << " injector '" << this->modelName() << "' in " << record
+                << "): it would never be made." << nl
+                << "Set SOI to the start time or later to fill then, or start"
+                << " from a time before SOI." << exit(FatalIOError);
+        }
+        Info<< "    riserFill: the fill made in the step that holds SOI = "
+            << this->SOI_ << " (" << added << " ores) is in the cloud read at "
+            << time.timeName() << "; nothing more to place (the run that wrote"
+            << " it did not record its entries: a change of them is not"
+            << " checked)" << endl;
+        return;
+    }
+
+    // every entry as the fill was made with it
+    IStringStream is(stored);
+    const dictionary made(is);
+    wordList keys(dict.toc());
+    for (const word& key : made.toc())
+    {
+        if (!keys.found(key))
+        {
+            keys.append(key);
+        }
+    }
+    Foam::sort(keys);
+    // an entry's value as written, on one line (none: "no entry")
+    auto text = [](const dictionary& d, const word& key) -> std::string
+    {
+        const entry* e = d.findEntry(key, keyType::LITERAL);
+        if (!e)
+        {
+            return "no entry";
+        }
+        OStringStream os;
+        os.precision(15);
+        e->write(os);
+        std::string value;
+        std::istringstream words(os.str());
+        std::string w;
+        words >> w;
+        while (words >> w)
+        {
+            value += (value.empty() ? "" : " ") + w;
+        }
+        if (!e->isDict() && !value.empty() && value.back() == ';')
+        {
+            value.pop_back();
+        }
+        return value;
+    };
+    const label ores = this->template getModelProperty<label>("fillOres", 0);
+    const scalar Cv = this->template getModelProperty<scalar>("fillSolidsFraction", 0);
+    for (const word& key : keys)
+    {
+        const std::string now = text(dict, key);
+        const std::string then = text(made, key);
+        if (now != then)
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << key << "' changed at a restart: " << now.c_str()
+                << " here, " << then.c_str() << " in the fill made in the step"
+                << " that holds SOI = " << this->SOI_ << " (" << ores
+                << " ores, C_v = " << Cv << "; recorded in " << record
+                << "). The fill is made once: the cloud read at "
+                << time.timeName() << " holds its ores, and a fill changed now"
+                << " would place none." << nl
+                << "Restore the entry as it was, or start from a time before"
+                << " SOI (the fill is then made anew, with the entries as they"
+                << " are)." << exit(FatalIOError);
+        }
+    }
+    Info<< "    riserFill: the fill made in the step that holds SOI = "
+        << this->SOI_ << ", " << ores << " ores at C_v = " << Cv << ", is in the"
+        << " cloud read at " << time.timeName() << "; nothing more to place"
+        << endl;
 }
 
 
@@ -182,7 +294,16 @@ Foam::RiserFillInjection<CloudType>::RiserFillInjection
         dict, owner, modelName, typeName, {"solidsFraction"}
     )
 {
-    fill();
+    // the fill is made in the step that holds SOI: on a restart after it,
+    // the cloud read holds its ores
+    if (this->SOI_ < owner.db().time().value())
+    {
+        checkFillMade();
+    }
+    else
+    {
+        fill();
+    }
 }
 
 
