@@ -42,7 +42,8 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
     mesh_(mesh),
     frame_(simulationFrame::lab),
     exactCarrier_(false),
-    steady_(false)
+    steady_(false),
+    uniform_(true)
 {
     IOobject io
     (
@@ -80,13 +81,14 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
           : new riser::RiserFlow
             (
                 lab_->diameter(), lab_->centreLineSpeed(),
-                riser::RiserMotion::atRest()
+                riser::SinusoidMotion::atRest()
             )
         );
-        steady_ = flow_->motion().omega() == 0;
+        steady_ = flow_->motion().steady();
+        uniform_ = lab_->motion().uniformAlongAxis();
         if (steady_)
         {
-            last_.flow = flow_->motion().state(0);
+            last_.flow = flow_->motion().state(0, 0);
         }
     }
 
@@ -179,6 +181,27 @@ riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
 
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+Foam::scalar Foam::riserModel::angularFrequency
+(
+    const dictionary& dict,
+    const string& what
+) const
+{
+    try
+    {
+        return motion().angularFrequency();
+    }
+    catch (const std::domain_error&)
+    {
+        FatalIOErrorInFunction(dict)
+            << what << " needs the riser's frequency, but its motion ("
+            << motion().type() << ", constant/riserProperties) has several"
+            << exit(FatalIOError);
+    }
+    return 0;
+}
+
 
 void Foam::riserModel::requireRiser() const
 {
