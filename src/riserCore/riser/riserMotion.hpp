@@ -9,8 +9,8 @@
 // riser is x - axis(x_z, t), a velocity relative to it v - velocity(x_z, t),
 // both asked at the point's own height x_z.
 //
-// A motion is a run-time selected model (riser::SinusoidMotion); it is
-// immutable, and the flow, its wall and the
+// A motion is a run-time selected model (riser::SinusoidMotion,
+// riser::HarmonicsMotion); it is immutable, and the flow, its wall and the
 // OpenFOAM layer share one instance (MotionPtr). A virtual call per
 // evaluation is the price of the choice: next to the sines it evaluates it
 // is small, and no evaluation allocates.
