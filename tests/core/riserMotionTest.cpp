@@ -3,6 +3,7 @@
 // derivatives and central finite differences, the figure-of-eight orbit
 // against its closed form, the bounds and the frame changes.
 // SPDX-License-Identifier: GPL-3.0-or-later
+#include "carrier/riserFlow.hpp"
 #include "riser/harmonicsMotion.hpp"
 #include "riser/sinusoidMotion.hpp"
 
@@ -160,4 +161,46 @@ TEST(HarmonicsMotion, RejectsBadArguments)
     EXPECT_THROW(HarmonicsMotion({{0.1, INFINITY, 0.0}}, {}), std::invalid_argument);
     EXPECT_THROW(SinusoidMotion(0.1, 1.0, NAN), std::invalid_argument);
     EXPECT_TRUE(HarmonicsMotion({}, {}).steady());
+}
+
+// The carrier and the wall move with an axis that moves in x and y: the
+// Poiseuille flow about (x_c, y_c) carried at (U_r, V_r), its curl about the
+// moving axis, Du/Dt the riser's acceleration (central differences, as in
+// riserFlowTest: tolerance 1e-5 over truncation ~1e-9 and round-off ~1e-10),
+// the wall's distance, normal and velocity. Closed forms to round-off of
+// the sums (1e-15 on values of order 1).
+TEST(HarmonicsMotion, CarrierAndWallAboutTheMovingAxis)
+{
+    const double w = twoPi*0.8;
+    const RiserFlow flow(0.1, 1.0, HarmonicsMotion::make({{0.02, 2.0*w, 0.3}}, {{0.05, w, -0.2}}));
+    const double R = 0.05, h = 1e-6;
+    for (double t : {0.0, 0.07, 0.21, 1.3})
+    {
+        const double z = 0.4;
+        const Vector a = flow.motion().axis(z, t), U = flow.motion().velocity(z, t);
+        EXPECT_NEAR((flow.velocity(Vector(a.x(), a.y(), z), t) - Vector(U.x(), U.y(), 1.0)).norm(), 0.0, 1e-15);
+        for (double theta : {0.0, 1.0, 2.5, 4.0})
+        {
+            const Vector onWall(a.x() + R*std::cos(theta), a.y() + R*std::sin(theta), z);
+            EXPECT_NEAR(flow.velocity(onWall, t).z(), 0.0, 1e-14);
+            EXPECT_NEAR(flow.wall().distance(onWall, t), 0.0, 1e-15);
+            const Vector x(a.x() + 0.6*R*std::cos(theta), a.y() + 0.6*R*std::sin(theta), z);
+            const double c = 2.0*1.0/(R*R);
+            EXPECT_NEAR((flow.vorticity(x, t) - Vector(-c*(x.y() - a.y()), c*(x.x() - a.x()), 0.0)).norm(),
+                        0.0, 1e-12);
+            EXPECT_NEAR((flow.wall().normal(x, t) - Vector(std::cos(theta), std::sin(theta), 0.0)).norm(),
+                        0.0, 1e-14);
+            EXPECT_TRUE(flow.wall().velocity(x, t) == U);
+            // Du/Dt = du/dt + (u.grad) u, by central differences
+            const Vector u = flow.velocity(x, t);
+            Vector DuDt = (flow.velocity(x, t + h) - flow.velocity(x, t - h))/(2.0*h);
+            for (int k = 0; k < 3; ++k)
+            {
+                Vector e = Vector::Zero(); e[k] = h;
+                DuDt += u[k]*(flow.velocity(x + e, t) - flow.velocity(x - e, t))/(2.0*h);
+            }
+            EXPECT_NEAR((flow.materialDerivative(x, t) - DuDt).norm(), 0.0, 1e-5);
+            EXPECT_TRUE(flow.materialDerivative(x, t) == flow.motion().acceleration(z, t));
+        }
+    }
 }
