@@ -162,13 +162,19 @@ private:
         return s;
     }
 
-    //- The largest n-th derivative of the sum: sum a omega^n
+    //- The largest n-th derivative of the sum: sum a omega^n, each term
+    //  multiplied in the sinusoid's order ((a omega) omega)
     static double bound(const std::vector<Harmonic>& list, int n)
     {
         double s = 0.0;
         for (const Harmonic& h : list)
         {
-            s += h.amplitude*std::pow(h.omega, n);
+            double term = h.amplitude;
+            for (int k = 0; k < n; ++k)
+            {
+                term *= h.omega;
+            }
+            s += term;
         }
         return s;
     }
