@@ -10,6 +10,7 @@ SPDX-License-Identifier: GPL-3.0-or-later
 """
 import math
 import os
+import re
 
 import numpy as np
 
@@ -37,8 +38,15 @@ class Riser:
 
     @classmethod
     def of_case(cls, case):
-        """The riser of the case folder's constant/riserProperties."""
+        """The riser of the case folder's constant/riserProperties: its
+        sinusoid of top-level entries A, f (omega), phi0. A riser given by a
+        'motion' dictionary (the harmonics, or a sinusoid written there) is
+        refused (ValueError) rather than read as one at rest."""
         path = os.path.join(case, "constant", "riserProperties")
+        with open(path) as f:
+            if re.search(r"^\s*motion\b", f.read(), re.M):
+                raise ValueError("%s: Riser reads the top-level sinusoid A, f, phi0, not "
+                                 "a 'motion' dictionary" % path)
         entry = lambda name, default=None: (  # noqa: E731
             ff.read_entry(path, name) if ff.read_entry(path, name) is not None else default)
         omega = entry("omega")

@@ -18,6 +18,10 @@ const double h = 1e-6;    // finite-difference step [m] and [s]
 // round-off eps |u| / h ~ 1e-10: tolerance 1e-7 covers both with margin.
 const double tol = 1e-7;
 
+// The axis x_c and the riser's velocity U_r at height z = 2 m
+double xc(double t) { return flow.motion().axis(2.0, t).x(); }
+double Ur(double t) { return flow.motion().velocity(2.0, t).x(); }
+
 Vector dudx(const Vector& x, double t, int k)
 {
     Vector e = Vector::Zero(); e[k] = h;
@@ -54,38 +58,39 @@ TEST(RiserFlow, RiserKinematics)
 {
     for (double t : {0.0, 0.05, 0.13})
     {
-        const double v = (flow.motion().axisPosition(t + h) - flow.motion().axisPosition(t - h))/(2.0*h);
-        const double a = (flow.motion().riserVelocity(t + h) - flow.motion().riserVelocity(t - h))/(2.0*h);
-        EXPECT_NEAR(flow.motion().riserVelocity(t), v, tol);
-        EXPECT_NEAR(flow.motion().riserAcceleration(t), a, tol*100.0);
+        const double v = (xc(t + h) - xc(t - h))/(2.0*h);
+        const double a = (Ur(t + h) - Ur(t - h))/(2.0*h);
+        EXPECT_NEAR(Ur(t), v, tol);
+        EXPECT_NEAR(flow.motion().acceleration(2.0, t).x(), a, tol*100.0);
     }
-    EXPECT_NEAR(flow.motion().axisPosition(0.0), 0.1*std::sin(0.4), 1e-15);
+    EXPECT_NEAR(xc(0.0), 0.1*std::sin(0.4), 1e-15);
     // Poiseuille profile: u_cm on the axis, zero on the wall, riser speed sideways
     const double t = 0.1;
-    EXPECT_NEAR(flow.velocity(Vector(flow.motion().axisPosition(t), 0, 2), t).z(), 1.0, 1e-15);
-    EXPECT_NEAR(flow.velocity(Vector(flow.motion().axisPosition(t) + 0.05, 0, 2), t).z(), 0.0, 1e-15);
-    EXPECT_NEAR(flow.velocity(Vector(0, 0.05, 2), t).x(), flow.motion().riserVelocity(t), 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(xc(t), 0, 2), t).z(), 1.0, 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(xc(t) + 0.05, 0, 2), t).z(), 0.0, 1e-15);
+    EXPECT_NEAR(flow.velocity(Vector(0, 0.05, 2), t).x(), Ur(t), 1e-15);
 }
 
-// The kinematics taken once for a time (RiserMotion::state, as the cloud's
-// forces share them) give the values of the evaluations at t, to the bit;
-// a riser that does not oscillate has the same kinematics at every t >= 0.
+// The kinematics taken once for a height and time (RiserMotion::state, as
+// the cloud's forces share them) give the values of the evaluations at
+// (z, t), to the bit; a riser that does not oscillate has the same
+// kinematics at every t >= 0.
 TEST(RiserFlow, StateEvaluationIsTheTimeEvaluation)
 {
-    const RiserFlow still(0.1, 1.0, RiserMotion::atRest());
+    const RiserFlow still(0.1, 1.0, SinusoidMotion::atRest());
     for (double t : {0.0, 0.0123456789, 0.07, 0.21, 3.3})
     {
-        const RiserMotion::State s = flow.motion().state(t);
-        EXPECT_EQ(s.axisPosition, flow.motion().axisPosition(t));
-        EXPECT_EQ(s.velocity, flow.motion().riserVelocity(t));
-        EXPECT_EQ(s.acceleration, flow.motion().riserAcceleration(t));
         for (const Vector& x : {Vector(0.01, -0.02, 0.3), Vector(-0.03, 0.04, 1.0)})
         {
+            const AxisState s = flow.motion().state(x.z(), t);
+            EXPECT_EQ(s.position, flow.motion().axis(x.z(), t));
+            EXPECT_EQ(s.velocity, flow.motion().velocity(x.z(), t));
+            EXPECT_EQ(s.acceleration, flow.motion().acceleration(x.z(), t));
             EXPECT_TRUE(flow.velocity(x, s) == flow.velocity(x, t));
             EXPECT_TRUE(flow.vorticity(x, s) == flow.vorticity(x, t));
             EXPECT_TRUE(flow.materialDerivative(s) == flow.materialDerivative(x, t));
-            EXPECT_TRUE(flow.motion().radialOffset(x, s) == flow.motion().radialOffset(x, t));
-            const RiserMotion::State s0 = still.motion().state(0.0);
+            EXPECT_TRUE(RiserMotion::radialOffset(x, s) == flow.motion().radialOffset(x, t));
+            const AxisState s0 = still.motion().state(x.z(), 0.0);
             EXPECT_TRUE(still.velocity(x, s0) == still.velocity(x, t));
             EXPECT_TRUE(still.vorticity(x, s0) == still.vorticity(x, t));
             EXPECT_TRUE(still.materialDerivative(s0) == still.materialDerivative(x, t));
@@ -99,7 +104,7 @@ TEST(RiserFlow, StateEvaluationIsTheTimeEvaluation)
 // normal is +x.
 TEST(CylinderWall, ContactPointIsTheWallsOverlapNormalAndVelocity)
 {
-    const CylinderWall wall(0.1, flow.motion());
+    const CylinderWall wall(0.1, flow.motionPtr());
     const double r = 0.005;
     for (double t : {0.0, 0.0123456789, 0.0123456789, 0.21, 0.07, 0.21, 3.3, 0.0})
     {
@@ -111,7 +116,7 @@ TEST(CylinderWall, ContactPointIsTheWallsOverlapNormalAndVelocity)
             EXPECT_TRUE(c.normal == wall.normal(x, t)) << t;
             EXPECT_TRUE(c.velocity == wall.velocity(x, t)) << t;
         }
-        const Vector onAxis(flow.motion().axisPosition(t), 0.0, 0.5);
+        const Vector onAxis(flow.motion().axis(0.5, t).x(), 0.0, 0.5);
         EXPECT_TRUE(wall.contactPoint(onAxis, r, t).normal == Vector(1.0, 0.0, 0.0));
     }
 }

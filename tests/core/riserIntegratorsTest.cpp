@@ -120,9 +120,9 @@ TEST(RiserIntegrators, IntegratorsAgreeWithoutContact)
                                ForceSelection{}, contact);
     ParticleState s;
     s.x = Vector(0.02, 0.02, 0.0);
-    const double R = 0.05, r2 = (s.x.x() - riser.motion().axisPosition(0.0))*(s.x.x() - riser.motion().axisPosition(0.0))
-                                + s.x.y()*s.x.y();
-    s.v = Vector(riser.motion().riserVelocity(0.0), 0.0, 1.0*(1.0 - r2/(R*R)));
+    const double xc = riser.motion().axis(s.x.z(), 0.0).x();
+    const double R = 0.05, r2 = (s.x.x() - xc)*(s.x.x() - xc) + s.x.y()*s.x.y();
+    s.v = Vector(riser.motion().velocity(s.x.z(), 0.0).x(), 0.0, 1.0*(1.0 - r2/(R*R)));
     std::vector<Vector> a, p;
     Observer oa, op;
     oa.row = [&](double, const ParticleState& q) { a.push_back(q.x); };

@@ -200,8 +200,10 @@ int main(int argc, char *argv[])
     // pressure less its part -a_r.x (and less the hydrostatic part). In
     // the riser frame a_r is the frame's (riserModel); in the lab frame
     // the change of the moving mesh's velocity over the step,
-    // (x_c(t) - 2 x_c(t - dt) + x_c(t - 2 dt))/dt^2, so that the carrier
-    // keeps the wall's discrete velocity
+    // (x_c(t) - 2 x_c(t - dt) + x_c(t - 2 dt))/dt^2 (and y_c's), so that
+    // the carrier keeps the wall's discrete velocity; the riser's motion
+    // is the same at every height (createFields), asked at the section's
+    // lowest z
     dimensionedVector aRiser("aRiser", dimAcceleration, Zero);
     const bool riserFrame =
         theRiser.frame() == riserModel::simulationFrame::riser;
@@ -209,23 +211,22 @@ int main(int argc, char *argv[])
     {
         const riser::RiserMotion& motion = theRiser.motion();
         const scalar t = runTime.value();
+        const scalar z = theRiser.section().z0;
         if (motion.maxSpeed() == 0)
         {
             return vector::zero;
         }
         if (riserFrame)
         {
-            return theRiser.frameAcceleration(t);
+            return theRiser.frameAcceleration(z, t);
         }
         const scalar dt = runTime.deltaTValue();
-        return vector
+        return fromCore
         (
             (
-                motion.axisPosition(t) - 2*motion.axisPosition(t - dt)
-              + motion.axisPosition(t - 2*dt)
-            )/sqr(dt),
-            0,
-            0
+                motion.axis(z, t) - 2*motion.axis(z, t - dt)
+              + motion.axis(z, t - 2*dt)
+            )/sqr(dt)
         );
     };
 

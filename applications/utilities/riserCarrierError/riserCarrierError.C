@@ -67,13 +67,29 @@ int main(int argc, char *argv[])
         dimensionedVector(dimVelocity, Zero)
     );
     carrierFlow carrier(U, true);
-    const riser::RiserFlow& flow = riserModel::New(mesh).flow();
+    const riserModel& theRiser = riserModel::New(mesh);
+    const riser::RiserFlow& flow = theRiser.flow();
     const riser::RiserMotion& motion = flow.motion();
     const scalar R = flow.radius();
-    const scalar period =
-        motion.omega() > 0 ? constant::mathematical::twoPi/motion.omega() : 1;
+    if (!motion.uniformAlongAxis())
+    {
+        FatalErrorInFunction
+            << "the mesh moves rigidly here: the riser's motion must be the"
+            << " same at every height, not of type " << motion.type()
+            << exit(FatalError);
+    }
+    // the riser's kinematics, the same at every height, asked at the mesh's
+    // lowest z
+    const scalar z0 = theRiser.section().z0;
+    auto period = [&]()
+    {
+        const scalar omega =
+            theRiser.angularFrequency(theRiser.dict(), "the default -time");
+        return omega > 0 ? constant::mathematical::twoPi/omega : 1;
+    };
 
-    const scalar t = args.getOrDefault<scalar>("time", 0.875*period);
+    const scalar t =
+        args.found("time") ? args.get<scalar>("time") : 0.875*period();
     const scalar dt = args.getOrDefault<scalar>("deltaT", 1e-5);
     const label nSamples = args.getOrDefault<label>("samples", 4000);
     const scalar d = args.getOrDefault<scalar>("particleDiameter", 0.01);
@@ -85,12 +101,13 @@ int main(int argc, char *argv[])
     }
 
     // The mesh is centred on the axis at t - dt: mesh coordinates are lab
-    // coordinates shifted by x_c(t - dt) (a constant shift changes nothing),
-    // so that only the step's own small translation moves the mesh.
-    const scalar shift = motion.axisPosition(t - dt);
+    // coordinates shifted by (x_c, y_c)(t - dt) (a constant shift changes
+    // nothing), so that only the step's own small translation moves the
+    // mesh.
+    const vector shift = fromCore(motion.axis(z0, t - dt));
     auto lab = [shift](const point& x)
     {
-        return toCore(x + vector(shift, 0, 0));
+        return toCore(x + shift);
     };
     const pointField points0(mesh.points());
 
@@ -119,7 +136,8 @@ int main(int argc, char *argv[])
     imposeFlow(t - dt);
     U.oldTime();
     runTime.setTime(t, 2);
-    mesh.movePoints(points0 + vector(motion.axisPosition(t) - shift, 0, 0));
+    const vector axisNow = fromCore(motion.axis(z0, t)) - shift;
+    mesh.movePoints(points0 + axisNow);
     imposeFlow(t);
 
     dictionary schemes;
@@ -130,7 +148,7 @@ int main(int argc, char *argv[])
 
     const scalar uScale = max(flow.centreLineSpeed(), SMALL);
     const scalar curlScale = 2*uScale/R;
-    const scalar aScale = max(motion.amplitude()*sqr(motion.omega()), SMALL);
+    const scalar aScale = max(motion.maxAcceleration(), SMALL);
     const boundBox bb(mesh.points());
 
     Random rnd(1234);
@@ -141,10 +159,7 @@ int main(int argc, char *argv[])
         const scalar r = (R - 0.5*d)*Foam::sqrt(rnd.sample01<scalar>());
         const scalar theta = constant::mathematical::twoPi*rnd.sample01<scalar>();
         const scalar z = bb.min().z() + bb.span().z()*(0.1 + 0.8*rnd.sample01<scalar>());
-        const point x
-        (
-            motion.axisPosition(t) - shift + r*Foam::cos(theta), r*Foam::sin(theta), z
-        );
+        const point x = axisNow + vector(r*Foam::cos(theta), r*Foam::sin(theta), z);
         const label celli = mesh.findCell(x);
         if (celli < 0) continue;
         const riser::Vector xc = lab(x);

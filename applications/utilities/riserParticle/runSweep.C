@@ -75,7 +75,7 @@ sweepRow sweepCase
         s.riser = riser::RiserFlow
         (
             base.diameter(), base.centreLineSpeed(), A, 2*constant::mathematical::pi*f,
-            base.motion().phase()
+            static_cast<const riser::SinusoidMotion&>(base.motion()).phase()
         );
         // the release relative to the case's own riser, placed in this one
         riserRelease r = scene.releases.first();
@@ -85,7 +85,12 @@ sweepRow sweepCase
         );
         r.U0 = fromCore
         (
-            s.riser.motion().labVelocity(base.motion().relativeVelocity(toCore(r.U0), r.t0), r.t0)
+            s.riser.motion().labVelocity
+            (
+                toCore(r.x0),
+                base.motion().relativeVelocity(toCore(scene.releases.first().x0), toCore(r.U0), r.t0),
+                r.t0
+            )
         );
 
         const riser::RiserParticleLaw law = s.law(r);
@@ -107,7 +112,7 @@ sweepRow sweepCase
                 throw std::runtime_error("particle outside the pipe");
             }
             row.maxLateral =
-                max(row.maxLateral, mag(s.riser.motion().relativeVelocity(p.v, t).x()));
+                max(row.maxLateral, mag(s.riser.motion().relativeVelocity(p.x, p.v, t).x()));
             if (liftAt < 0 && t - r.t0 >= liftAfter*(1 - 1e-12))
             {
                 liftAt = t;
@@ -175,6 +180,13 @@ void Foam::runSweep
     using namespace checkedEntry;
     const IOdictionary dict(readCaseDict(runTime, "riserSweepDict", runTime.system()));
     allowedKeys(dict, {"A", "f", "periods", "liftTime"});
+    if (!dynamic_cast<const riser::SinusoidMotion*>(&scene.riser.motion()))
+    {
+        FatalIOErrorInFunction(dict)
+            << "the sweep varies a sinusoid riser's A and f, but the riser's"
+            << " motion (constant/riserProperties) is of type "
+            << scene.riser.motion().type() << exit(FatalIOError);
+    }
     const List<scalar> As = readSweepList(dict, "A", true, riserModel::maxAmplitude);
     const List<scalar> fs = readSweepList(dict, "f", false, riserModel::maxFrequency);
     for (const scalar A : As)

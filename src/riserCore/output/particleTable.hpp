@@ -42,7 +42,7 @@ struct ParticleTableRow
                      const RiserMotion& riser)
     :
         t(time), origProc(proc), origId(id), x(xLab), U(ULab),
-        xRel(riser.toRiserFrame(xLab, time)), URel(riser.relativeVelocity(ULab, time))
+        xRel(riser.toRiserFrame(xLab, time)), URel(riser.relativeVelocity(xLab, ULab, time))
     {}
 };
 

@@ -1,111 +1,117 @@
-// riserCore: the riser's kinematics (doc/theory.md section 2). The riser is
-// a rigid pipe whose axis is parallel to z and moves sideways along x:
-//   x_c(t) = A sin(omega t + phi0),   U_r(t) = A omega cos(omega t + phi0),
-//   a_r(t) = -A omega^2 sin(omega t + phi0).
+// riserCore: the riser's motion (doc/theory.md section 2), the one thing
+// every caller asks for the riser's axis, its velocity or acceleration, or a
+// change of frame. The riser's axis is parallel to z; at height z and time t
+// it passes through (x_c, y_c) and moves with (U_r, V_r):
+//   axis(z, t)         = (x_c, y_c, 0)
+//   velocity(z, t)     = (U_r, V_r, 0)        the wall's at that height
+//   acceleration(z, t) = (dU_r/dt, dV_r/dt, 0)
 // The riser frame translates with the axis: a position relative to the
-// riser is x - (x_c, 0, 0), a velocity relative to it v - (U_r, 0, 0).
-// Every caller that needs the axis, the riser's velocity or acceleration,
-// or a change of frame asks this type.
+// riser is x - axis(x_z, t), a velocity relative to it v - velocity(x_z, t),
+// both asked at the point's own height x_z.
+//
+// A motion is a run-time selected model (riser::SinusoidMotion,
+// riser::HarmonicsMotion); it is immutable, and the flow, its wall and the
+// OpenFOAM layer share one instance (MotionPtr). A virtual call per
+// evaluation is the price of the choice: next to the sines it evaluates it
+// is small, and no evaluation allocates.
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_RISER_RISERMOTION_HPP
 #define RISERCORE_RISER_RISERMOTION_HPP
 
-#include "checks.hpp"
 #include "vector.hpp"
 
 #include <cmath>
+#include <memory>
 
 namespace riser {
+
+//- The axis' kinematics at one height and time (z components zero)
+struct AxisState
+{
+    Vector position;        //!< (x_c, y_c, 0) [m]
+    Vector velocity;        //!< (U_r, V_r, 0) [m/s]
+    Vector acceleration;    //!< (dU_r/dt, dV_r/dt, 0) [m/s^2]
+};
 
 class RiserMotion
 {
 public:
-    //- A: amplitude [m]; omega: angular frequency [rad/s]; phi0: phase [rad]
-    RiserMotion(double A, double omega, double phi0)
-    :
-        A_(A), omega_(omega), phi0_(phi0)
-    {
-        const char* law = "riser::RiserMotion";
-        requireNonNegative(law, "A", A);
-        requireNonNegative(law, "omega", omega);
-        requireInRange(law, "phi0", phi0, -HUGE_VAL, Bound::open, HUGE_VAL, Bound::open);
-    }
+    virtual ~RiserMotion() = default;
 
-    //- A riser at rest
-    static RiserMotion atRest() { return RiserMotion(0.0, 0.0, 0.0); }
+    //- The model's name in constant/riserProperties (sinusoid, harmonics)
+    virtual const char* type() const = 0;
 
-    double amplitude() const { return A_; }
-    double omega() const { return omega_; }
-    double frequency() const { return omega_/(2.0*M_PI); }
-    double phase() const { return phi0_; }
-    //- The largest speed of the riser, A omega
-    double maxSpeed() const { return A_*omega_; }
-    //- The largest acceleration of the riser, A omega^2
-    double maxAcceleration() const { return A_*omega_*omega_; }
+    //- The axis point (x_c, y_c, 0) at height z
+    virtual Vector axis(double z, double t) const = 0;
+    //- The riser's velocity at height z: every point of its cross-section
+    //  moves so
+    virtual Vector velocity(double z, double t) const = 0;
+    //- The riser's acceleration at height z
+    virtual Vector acceleration(double z, double t) const = 0;
+    //- axis, velocity and acceleration at (z, t), to the last bit, for
+    //  callers that ask for several of them at once
+    virtual AxisState state(double z, double t) const = 0;
 
-    //- Axis position x_c(t) (the axis passes through (x_c, 0, z))
-    double axisPosition(double t) const { return A_*std::sin(omega_*t + phi0_); }
-    //- Riser velocity U_r(t) along x
-    double riserVelocity(double t) const { return A_*omega_*std::cos(omega_*t + phi0_); }
-    //- Riser acceleration dU_r/dt along x
-    double riserAcceleration(double t) const
-    {
-        return -A_*omega_*omega_*std::sin(omega_*t + phi0_);
-    }
+    //- Bounds over every height and time: the largest speed and
+    //  acceleration of the riser (what the contact planner allows for)
+    virtual double maxSpeed() const = 0;
+    virtual double maxAcceleration() const = 0;
+    //- The largest distance |(x_c, y_c)| of the axis from the z axis over
+    //  every height at time t
+    virtual double axisOffsetBound(double t) const = 0;
 
-    //- The point (x_c, 0, 0) of the axis
-    Vector axis(double t) const { return Vector(axisPosition(t), 0.0, 0.0); }
-    //- The riser's velocity (U_r, 0, 0): every point of it moves so
-    Vector velocity(double t) const { return Vector(riserVelocity(t), 0.0, 0.0); }
-    //- The riser's acceleration (a_r, 0, 0)
-    Vector acceleration(double t) const { return Vector(riserAcceleration(t), 0.0, 0.0); }
+    //- The kinematics are the same at every time (a riser at rest, or one
+    //  standing aside)
+    virtual bool steady() const = 0;
+    //- The kinematics are the same at every height (a rigid riser)
+    virtual bool uniformAlongAxis() const = 0;
 
-    //- Lab position to the riser frame (relative to the axis point (x_c, 0, 0))
-    Vector toRiserFrame(const Vector& x, double t) const { return x - axis(t); }
+    //- The motion's one angular frequency [rad/s] (0 at rest), for the
+    //  callers that need "the" frequency (the Michaelides-Roig Basset
+    //  coefficient, the sweeps); std::domain_error for a motion of several
+    //  frequencies, whose callers must say what they mean instead
+    virtual double angularFrequency() const = 0;
+    //- The same in Hz
+    double frequency() const { return angularFrequency()/(2.0*M_PI); }
+
+    //- Lab position to the riser frame (relative to the axis at its height)
+    Vector toRiserFrame(const Vector& x, double t) const { return x - axis(x.z(), t); }
     //- Riser-frame position to the lab
-    Vector toLabFrame(const Vector& x, double t) const { return x + axis(t); }
-    //- Lab velocity to the velocity relative to the riser
-    Vector relativeVelocity(const Vector& v, double t) const { return v - velocity(t); }
-    //- Velocity relative to the riser to the lab's
-    Vector labVelocity(const Vector& v, double t) const { return v + velocity(t); }
-
-    //- The riser's kinematics at one time t, for callers that ask for
-    //  several of them at that time: axisPosition(t), riserVelocity(t)
-    //  and riserAcceleration(t), to the last bit
-    struct State
+    Vector toLabFrame(const Vector& x, double t) const { return x + axis(x.z(), t); }
+    //- Lab velocity v at x to the velocity relative to the riser
+    Vector relativeVelocity(const Vector& x, const Vector& v, double t) const
     {
-        double axisPosition;    //!< x_c(t) [m]
-        double velocity;        //!< U_r(t) [m/s]
-        double acceleration;    //!< a_r(t) [m/s^2]
-    };
-
-    State state(double t) const
+        return v - velocity(x.z(), t);
+    }
+    //- Velocity relative to the riser at x to the lab's
+    Vector labVelocity(const Vector& x, const Vector& v, double t) const
     {
-        return State{axisPosition(t), riserVelocity(t), riserAcceleration(t)};
+        return v + velocity(x.z(), t);
     }
 
     //- Offset of x from the axis in the cross-section (z component zero)
     Vector radialOffset(const Vector& x, double t) const
     {
-        return offsetFromAxis(x, axisPosition(t));
+        return offsetFromAxis(x, axis(x.z(), t));
     }
 
-    //- The same, with the riser's kinematics s = state(t) at the time
-    Vector radialOffset(const Vector& x, const State& s) const
+    //- The same, with the axis' kinematics s = state(x_z, t)
+    static Vector radialOffset(const Vector& x, const AxisState& s)
     {
-        return offsetFromAxis(x, s.axisPosition);
+        return offsetFromAxis(x, s.position);
     }
 
 private:
-    //- Offset of x from the axis at x_c
-    static Vector offsetFromAxis(const Vector& x, double xc)
+    //- Offset of x from the axis point a (y_c = 0 subtracts exactly)
+    static Vector offsetFromAxis(const Vector& x, const Vector& a)
     {
-        return Vector(x.x() - xc, x.y(), 0.0);
+        return Vector(x.x() - a.x(), x.y() - a.y(), 0.0);
     }
-
-    double A_, omega_, phi0_;
 };
+
+//- The shared, immutable motion of a flow, its wall and their copies
+using MotionPtr = std::shared_ptr<const RiserMotion>;
 
 } // namespace riser
 

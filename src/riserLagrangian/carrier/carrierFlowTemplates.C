@@ -61,7 +61,7 @@ Foam::vector Foam::carrierFlow::velocity
         riser_.flow().velocity
         (
             toCore(position(p)),
-            riser_.at(riser_.particleTime(p.stepFraction())).flow
+            riser_.at(position(p).z(), riser_.particleTime(p.stepFraction())).flow
         )
     );
 }
@@ -79,7 +79,7 @@ Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
         riser_.flow().vorticity
         (
             toCore(position(p)),
-            riser_.at(riser_.particleTime(p.stepFraction())).flow
+            riser_.at(position(p).z(), riser_.particleTime(p.stepFraction())).flow
         )
     );
 }
@@ -92,13 +92,13 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
     {
         return interpolate(materialDerivative_, p);
     }
-    // Du/Dt of the riser flow is uniform, (dU_r/dt, 0, 0): no position
-    // (on a moving mesh position() costs two cell-centre evaluations)
+    // Du/Dt of the riser flow is the riser's acceleration at the height:
+    // no position of a riser the same at every height (riserModel::height)
     return fromCore
     (
         riser_.flow().materialDerivative
         (
-            riser_.at(riser_.particleTime(p.stepFraction())).flow
+            riser_.at(riser_.height(p), riser_.particleTime(p.stepFraction())).flow
         )
     );
 }

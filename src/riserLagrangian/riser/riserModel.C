@@ -9,6 +9,7 @@
 #include "cyclicPolyPatch.H"
 #include "IOdictionary.H"
 #include "unitConversion.H"
+#include "riser/harmonicsMotion.hpp"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -42,7 +43,8 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
     mesh_(mesh),
     frame_(simulationFrame::lab),
     exactCarrier_(false),
-    steady_(false)
+    steady_(false),
+    uniform_(true)
 {
     IOobject io
     (
@@ -80,13 +82,14 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
           : new riser::RiserFlow
             (
                 lab_->diameter(), lab_->centreLineSpeed(),
-                riser::RiserMotion::atRest()
+                riser::SinusoidMotion::atRest()
             )
         );
-        steady_ = flow_->motion().omega() == 0;
+        steady_ = flow_->motion().steady();
+        uniform_ = lab_->motion().uniformAlongAxis();
         if (steady_)
         {
-            last_.flow = flow_->motion().state(0);
+            last_.flow = flow_->motion().state(0, 0);
         }
     }
 
@@ -138,22 +141,26 @@ void Foam::riserModel::checkWallMotion
 }
 
 
-riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
+// * * * * * * * * * * * * * * * Reading the motion  * * * * * * * * * * * * //
+
+namespace Foam
+{
+namespace
+{
+
+using rm = riserModel;
+
+//- The sinusoid of the entries A, f or omega, phi0 of dict
+riser::MotionPtr readSinusoid(const dictionary& dict)
 {
     using checkedEntry::dimensionedInRange;
     using constant::mathematical::twoPi;
 
-    checkedEntry::allowedKeys
-    (
-        dict,
-        {"D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier", "drive"}
-    );
-    const scalar D =
-        dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
-    const scalar uCentre =
-        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, maxSpeed, true);
     const scalar A =
-        dimensionedInRange(dict, "A", dimLength, 0, true, maxAmplitude, true);
+        dimensionedInRange
+        (
+            dict, "A", dimLength, 0, true, rm::maxAmplitude, true
+        );
 
     const bool hasF = dict.found("f"), hasOmega = dict.found("omega");
     if (hasF == hasOmega)
@@ -164,21 +171,173 @@ riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
     }
     const scalar omega = hasF
       ? twoPi
-       *dimensionedInRange(dict, "f", dimless/dimTime, 0, true, maxFrequency, true)
+       *dimensionedInRange
+        (
+            dict, "f", dimless/dimTime, 0, true, rm::maxFrequency, true
+        )
       : dimensionedInRange
         (
-            dict, "omega", dimless/dimTime, 0, true, twoPi*maxFrequency, true
+            dict, "omega", dimless/dimTime, 0, true, twoPi*rm::maxFrequency, true
         );
-    checkWallMotion(dict, A, omega/twoPi);
+    rm::checkWallMotion(dict, A, omega/twoPi);
 
     const scalar phi0 =
         checkedEntry::inRange(dict, "phi0", -twoPi, true, twoPi, true, 0);
 
-    return riser::RiserFlow(D, uCentre, A, omega, phi0);
+    return riser::SinusoidMotion::make(A, omega, phi0);
+}
+
+
+//- The harmonics of the list entry key of dict (empty without it)
+std::vector<riser::Harmonic> readHarmonicList
+(
+    const dictionary& dict,
+    const word& key
+)
+{
+    using constant::mathematical::twoPi;
+
+    std::vector<riser::Harmonic> list;
+    if (!dict.found(key))
+    {
+        return list;
+    }
+    // numbers only: nan and inf are words to the parser
+    for (const token& t : dict.lookup(key))
+    {
+        if (!t.isNumber() && !t.isPunctuation())
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << key << "': a list of (amplitude [m] frequency"
+                << " [Hz] phase [rad]) of finite numbers, found " << t
+                << nl << exit(FatalIOError);
+        }
+    }
+    const List<FixedList<scalar, 3>> entries =
+        dict.get<List<FixedList<scalar, 3>>>(key);
+    forAll(entries, i)
+    {
+        const FixedList<scalar, 3>& e = entries[i];
+        const char* names[] = {"amplitude", "frequency", "phase"};
+        const scalar lo[] = {0, 0, -twoPi};
+        const scalar hi[] = {rm::maxAmplitude, rm::maxFrequency, twoPi};
+        for (label k = 0; k < 3; ++k)
+        {
+            if (!(std::isfinite(e[k]) && e[k] >= lo[k] && e[k] <= hi[k]))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry '" << key << "' harmonic " << i << ": "
+                    << names[k] << " = " << e[k] << " outside the allowed"
+                    << " range [" << lo[k] << ", " << hi[k] << "]"
+                    << nl << exit(FatalIOError);
+            }
+        }
+        list.push_back(riser::Harmonic{e[0], twoPi*e[1], e[2]});
+    }
+    return list;
+}
+
+
+//- The riser's motion of a riserProperties dictionary (riserModel.H, Usage)
+riser::MotionPtr readMotion(const dictionary& dict)
+{
+    if (!dict.found("motion"))
+    {
+        return readSinusoid(dict);
+    }
+    for (const char* key : {"A", "f", "omega", "phi0"})
+    {
+        if (dict.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << key << "' beside the dictionary 'motion':"
+                << " give the riser's motion once, in 'motion' (or, for a"
+                << " sinusoid, as the entries A, f or omega, phi0 alone)"
+                << nl << exit(FatalIOError);
+        }
+    }
+    const dictionary& m = dict.subDict("motion");
+    enum class motionType { sinusoid, harmonics };
+    const motionType type = checkedEntry::choice<motionType>
+    (
+        m, "type",
+        {{"sinusoid", motionType::sinusoid}, {"harmonics", motionType::harmonics}}
+    );
+    if (type == motionType::sinusoid)
+    {
+        checkedEntry::allowedKeys(m, {"type", "A", "f", "omega", "phi0"});
+        return readSinusoid(m);
+    }
+
+    checkedEntry::allowedKeys(m, {"type", "x", "y"});
+    const riser::MotionPtr motion = riser::HarmonicsMotion::make
+    (
+        readHarmonicList(m, "x"), readHarmonicList(m, "y")
+    );
+    if
+    (
+        motion->maxSpeed() > rm::maxSpeed
+     || motion->maxAcceleration() > rm::maxAcceleration
+    )
+    {
+        FatalIOErrorInFunction(m)
+            << "the harmonics give the wall a speed of up to "
+            << motion->maxSpeed() << " m/s and an acceleration of up to "
+            << motion->maxAcceleration() << " m/s^2 (hypot of the sums of"
+            << " amplitude omega and amplitude omega^2 over x and over y);"
+            << " a riser's are at most " << rm::maxSpeed << " m/s and "
+            << rm::maxAcceleration << " m/s^2" << nl << exit(FatalIOError);
+    }
+    return motion;
+}
+
+} // End anonymous namespace
+} // End namespace Foam
+
+
+riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
+{
+    using checkedEntry::dimensionedInRange;
+
+    checkedEntry::allowedKeys
+    (
+        dict,
+        {
+            "D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier",
+            "drive", "motion"
+        }
+    );
+    const scalar D =
+        dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
+    const scalar uCentre =
+        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, maxSpeed, true);
+
+    return riser::RiserFlow(D, uCentre, readMotion(dict));
 }
 
 
 // * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * * //
+
+Foam::scalar Foam::riserModel::angularFrequency
+(
+    const dictionary& dict,
+    const string& what
+) const
+{
+    try
+    {
+        return motion().angularFrequency();
+    }
+    catch (const std::domain_error&)
+    {
+        FatalIOErrorInFunction(dict)
+            << what << " needs the riser's frequency, but its motion ("
+            << motion().type() << ", constant/riserProperties) has several"
+            << exit(FatalIOError);
+    }
+    return 0;
+}
+
 
 void Foam::riserModel::requireRiser() const
 {

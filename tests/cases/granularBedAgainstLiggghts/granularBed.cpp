@@ -14,6 +14,7 @@
 // tangential restitution passed here is the e_t of that damping ratio.
 // SPDX-License-Identifier: GPL-3.0-or-later
 #include "granular/granularSystem.hpp"
+#include "riser/sinusoidMotion.hpp"
 #include "wall/cylinderWall.hpp"
 #include "wall/planeWall.hpp"
 
@@ -49,8 +50,7 @@ int main(int argc, char** argv)
     const ElasticMaterial ore(E, nu);
     const HertzMindlin law(HertzMindlinParameters{ore, ore, e, et, mu});
     GranularSystem s(law, law, Vector(0, 0, -9.81), true);
-    const RiserMotion still = RiserMotion::atRest();
-    const CylinderWall riserWall(2.0*R, still);
+    const CylinderWall riserWall(2.0*R, SinusoidMotion::atRest());
     const PlaneWall floor(Vector::Zero(), Vector(0, 0, 1));
     s.addWall(riserWall);
     s.addWall(floor);

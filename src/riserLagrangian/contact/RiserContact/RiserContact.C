@@ -629,7 +629,7 @@ void Foam::RiserContact<CloudType>::collide()
     const scalar t = time.value();
     const scalar dt = time.deltaTValue();
     checkMeshUnchanged();
-    const scalar axisOffset = mag(riser_.flow().motion().axisPosition(t));
+    const scalar axisOffset = riser_.flow().motion().axisOffsetBound(t);
 
     // a stock parcel's wall contact in progress, kept here, follows the
     // parcel to the processor it moved to

@@ -229,7 +229,7 @@ void Foam::RiserContact<CloudType>::prepareSubCycles() const
     preparedIndex_ = time.timeIndex();
     checkMeshUnchanged();
     const scalar axisOffset =
-        mag(riser_.flow().motion().axisPosition(time.value() - dt));
+        riser_.flow().motion().axisOffsetBound(time.value() - dt);
 
     // this processor's particles: key, wall need
     const label nOwn = this->owner().size();

@@ -44,11 +44,10 @@ Foam::solidBodyMotionFunctions::riserOscillation::riserOscillation
 Foam::septernion
 Foam::solidBodyMotionFunctions::riserOscillation::transformation() const
 {
+    // the riser's motion is the same at every height (read): asked at z = 0
     const scalar t = time_.value();
-    const vector displacement
-    (
-        motion_->axisPosition(t) - motion_->axisPosition(0), 0, 0
-    );
+    const vector displacement =
+        fromCore(motion_->axis(0, t) - motion_->axis(0, 0));
     return septernion(-displacement)*quaternion(1);
 }
 
@@ -71,7 +70,14 @@ bool Foam::solidBodyMotionFunctions::riserOscillation::read
             false
         )
     );
-    motion_.reset(new riser::RiserMotion(riserModel::read(riserDict).motion()));
+    motion_ = riserModel::read(riserDict).motionPtr();
+    if (!motion_->uniformAlongAxis())
+    {
+        FatalIOErrorInFunction(riserDict)
+            << "riserOscillation moves the mesh rigidly: it needs a riser"
+            << " whose motion is the same at every height, not of type "
+            << motion_->type() << exit(FatalIOError);
+    }
     return true;
 }
 

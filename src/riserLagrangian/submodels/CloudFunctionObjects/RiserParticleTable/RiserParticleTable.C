@@ -277,7 +277,7 @@ void Foam::RiserParticleTable<CloudType>::postEvolve
         (
             t, key.first(), key.second(),
             labFrame ? toCore(x) : motion.toLabFrame(toCore(x), t),
-            labFrame ? toCore(p.U()) : motion.labVelocity(toCore(p.U()), t),
+            labFrame ? toCore(p.U()) : motion.labVelocity(toCore(x), toCore(p.U()), t),
             motion
         );
         row.lift = x.z() - lift_[key].x();

@@ -262,7 +262,7 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         const riser::Vector x = toCore(p.position());
         const scalar h = flow.motion().radialOffset(x, t).norm();
         const vector Ur =
-            fromCore(flow.motion().relativeVelocity(toCore(p.U()), t));
+            fromCore(flow.motion().relativeVelocity(x, toCore(p.U()), t));
         p.setCellValues(cloud, td);
 
         parcels += 1;

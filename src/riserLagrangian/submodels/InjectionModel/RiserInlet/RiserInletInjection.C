@@ -14,7 +14,6 @@ void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt
 {
     oreSource& source = *this->source_;
     const scalar gap = source.gap();
-    const vector axis = this->axisPoint(t);
     // every ore within reach of a new one: below the slab of the step
     // (release speeds are at most 100 m/s) and an ore's reach above it
     const scalar zReach = z0_ + 2*(source.maxDiameter() + gap) + 100*dt;
@@ -26,7 +25,8 @@ void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt
         DynamicList<scalar> d;
         for (const auto& p : this->owner())
         {
-            const vector offset = p.position() - axis;
+            const point xp = p.position();
+            const vector offset = xp - this->axisPoint(xp.z(), t);
             if (offset.z() < zReach)
             {
                 x.append(offset);
@@ -76,7 +76,10 @@ void Foam::RiserInletInjection<CloudType>::place(const scalar t, const scalar dt
         for (label attempt = 0; attempt < source.maxAttempts() && !done; ++attempt)
         {
             vector x = source.discPoint(next_.d);
-            const scalar rise = max(scalar(0), source.velocity(axis + x, t).z()*dt);
+            const scalar rise = max
+            (
+                scalar(0), source.velocity(this->axisPoint(z0_, t) + x, t).z()*dt
+            );
             x.z() = z0_ + r + gap + rise*source.uniform01();
             done =
                 keepsGap(x, r, nearX, nearD)

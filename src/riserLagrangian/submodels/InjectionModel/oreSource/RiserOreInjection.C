@@ -46,7 +46,8 @@ void Foam::RiserOreInjection<CloudType>::setPositionAndCell
 )
 {
     // about the riser's axis where the mesh is now
-    position = axisPoint(this->owner().mesh().time().value()) + places_[parcelI];
+    const vector& place = places_[parcelI];
+    position = axisPoint(place.z(), this->owner().mesh().time().value()) + place;
     this->findCellAtPosition(cellOwner, tetFacei, tetPti, position, true);
 }
 

@@ -256,7 +256,10 @@ Foam::RiserBassetForce<CloudType>::RiserBassetForce
     frequency_
     (
         coefficient_ == riser::BassetModel::michaelidesRoig
-      ? riserModel::New(mesh).motion().frequency()
+      ? riserModel::New(mesh).angularFrequency
+        (
+            this->coeffs(), "coefficient michaelidesRoig"
+        )/constant::mathematical::twoPi
       : 0
     ),
     kernel_(readKernel(this->coeffs(), mesh.time().deltaTValue())),

@@ -71,7 +71,10 @@ Foam::forceSuSp Foam::RiserFluidStressForce<CloudType>::calcCoupled
     // acceleration (the frame's acceleration added in the riser frame)
     const vector a =
         carrier_.materialDerivative(p)
-      + riser_.frameAcceleration(riser_.particleTime(p.stepFraction()));
+      + riser_.frameAcceleration
+        (
+            riser_.height(p), riser_.particleTime(p.stepFraction())
+        );
     return forceSuSp
     (
         fromCore(riser::fluidStressForce(mass*td.rhoc()/p.rho(), toCore(a))),
