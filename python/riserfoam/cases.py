@@ -11,6 +11,8 @@ import os
 import shutil
 import subprocess
 
+import numpy as np
+
 from . import foamfields as ff
 from . import pipeflow, tables
 from .carrier import D, UCM, Riser
@@ -652,6 +654,32 @@ def solve_coupled(case):
     run(["postProcess", "-func", "writeCellVolumes", "-latestTime", "-case", case],
         os.path.join(case, "log.writeCellVolumes"))
     return case
+
+def cell_velocities(case, time):
+    """The carrier's cell velocities U of a written time (numpy array)"""
+    return np.array(ff.read_vectors(os.path.join(case, time, "U"), "internalField"))
+
+
+def last_drive_gradient(case):
+    """The drive's last dp/dz [Pa/m] (postProcessing/riserDrive/0/drive.dat)"""
+    return tables.read(os.path.join(case, "postProcessing/riserDrive/0/drive.dat"))["dpdz"][-1]
+
+
+def written_times(case):
+    """The case's written times after 0, in order (folder names)"""
+    return sorted((d for d in os.listdir(case)
+                   if d != "0" and d.replace(".", "").isdigit()), key=float)
+
+
+def coupled_rest_state(case, n, D, nu, rho, ub):
+    """The periodic section of coupled_pipe_case (n cells across the core,
+    4 along) driven at the bulk velocity ub to its steady state at rest
+    (riserCoupledFoam, 20 steps of 100 s); its velocity field and last
+    dp/dz"""
+    coupled_pipe_case(case, n, 4, D=D, nu=nu, rho=rho, uCentre=2 * ub, dt=100.0, end=2000.0)
+    run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
+    return cell_velocities(case, "2000"), last_drive_gradient(case)
+
 
 def coupled_pipe_RAS(case, ub, D=0.1, model="kOmegaSST", nutWall="nutkWallFunction"):
     """Make a coupled_pipe_case turbulent: the RAS model (kOmegaSST,

@@ -30,9 +30,7 @@ import math
 import os
 import shutil
 
-import numpy as np
-
-from riserfoam import cases, foamfields, tables
+from riserfoam import cases, foamfields
 from riserfoam.checks import Checks
 
 checks = Checks(width=64)
@@ -42,25 +40,9 @@ OMEGA = 2 * math.pi * F
 T = 1 / F
 
 
-def velocities(case, time):
-    return np.array(foamfields.read_vectors(os.path.join(case, time, "U"), "internalField"))
-
-
-def last_dpdz(case):
-    return tables.read(os.path.join(case, "postProcessing/riserDrive/0/drive.dat"))["dpdz"][-1]
-
-
-def times(case):
-    return sorted((d for d in os.listdir(case)
-                   if d != "0" and d.replace(".", "").isdigit()), key=float)
-
-
 # the steady state at rest
 rest = os.path.abspath("rest")
-cases.coupled_pipe_case(rest, N, 4, D=D, nu=NU, rho=RHO, uCentre=2 * UB, dt=100.0, end=2000.0)
-cases.run(["riserCoupledFoam", "-case", rest], os.path.join(rest, "log.riserCoupledFoam"))
-U_rest = velocities(rest, "2000")
-dpdz_rest = last_dpdz(rest)
+U_rest, dpdz_rest = cases.coupled_rest_state(rest, N, D, NU, RHO, UB)
 
 
 def oscillating(name, frame, steps, amplitude=A):
@@ -92,13 +74,13 @@ boundaryField
 """ % (len(U_rest), rows, A * OMEGA), "volVectorField")
     cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
     lateral = axial = 0.0
-    for t in times(case):
-        U = velocities(case, t)
+    for t in cases.written_times(case):
+        U = cases.cell_velocities(case, t)
         tt = float(t)
         mesh = A * (math.sin(OMEGA * tt) - math.sin(OMEGA * (tt - dt))) / dt if frame == "lab" else 0
         lateral = max(lateral, abs(U[:, 0] - mesh).max(), abs(U[:, 1]).max())
         axial = max(axial, abs(U[:, 2] - U_rest[:, 2]).max())
-    return lateral, axial, last_dpdz(case), U
+    return lateral, axial, cases.last_drive_gradient(case), U
 
 
 print("riser frame, 20 steps a period: the flow of the riser at rest")

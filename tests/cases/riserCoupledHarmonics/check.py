@@ -27,7 +27,7 @@ import shutil
 
 import numpy as np
 
-from riserfoam import cases, foamfields, tables
+from riserfoam import cases, foamfields
 from riserfoam.checks import Checks
 
 checks = Checks(width=64)
@@ -42,25 +42,9 @@ def axis(t):
     return np.array([AX * math.sin(WX * t), AY * math.sin(WY * t)])
 
 
-def velocities(case, time):
-    return np.array(foamfields.read_vectors(os.path.join(case, time, "U"), "internalField"))
-
-
-def last_dpdz(case):
-    return tables.read(os.path.join(case, "postProcessing/riserDrive/0/drive.dat"))["dpdz"][-1]
-
-
-def times(case):
-    return sorted((d for d in os.listdir(case)
-                   if d != "0" and d.replace(".", "").isdigit()), key=float)
-
-
 # the steady state at rest
 rest = os.path.abspath("rest")
-cases.coupled_pipe_case(rest, N, 4, D=D, nu=NU, rho=RHO, uCentre=2 * UB, dt=100.0, end=2000.0)
-cases.run(["riserCoupledFoam", "-case", rest], os.path.join(rest, "log.riserCoupledFoam"))
-U_rest = velocities(rest, "2000")
-dpdz_rest = last_dpdz(rest)
+U_rest, dpdz_rest = cases.coupled_rest_state(rest, N, D, NU, RHO, UB)
 
 
 def oscillating(name, frame, steps, moving=True):
@@ -101,13 +85,13 @@ boundaryField
 """ % (len(U_rest), rows, Ux, Uy), "volVectorField")
     cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
     lateral = axial = 0.0
-    for t in times(case):
-        U = velocities(case, t)
+    for t in cases.written_times(case):
+        U = cases.cell_velocities(case, t)
         tt = float(t)
         mesh = (axis(tt) - axis(tt - dt)) / dt if frame == "lab" else np.zeros(2)
         lateral = max(lateral, abs(U[:, 0] - mesh[0]).max(), abs(U[:, 1] - mesh[1]).max())
         axial = max(axial, abs(U[:, 2] - U_rest[:, 2]).max())
-    return lateral, axial, last_dpdz(case), U
+    return lateral, axial, cases.last_drive_gradient(case), U
 
 
 print("riser frame, 20 steps a period: the flow of the riser at rest")
