@@ -681,6 +681,20 @@ def coupled_rest_state(case, n, D, nu, rho, ub):
     return cell_velocities(case, "2000"), last_drive_gradient(case)
 
 
+def deviation_from_rest(case, U_rest, mesh_velocity):
+    """Over the written times of a coupled run: the largest lateral
+    velocity relative to the mesh (mesh_velocity(t): its (x, y) velocity
+    over the step ending at t), the largest change of the axial velocity
+    from U_rest; and the run's last dp/dz and velocity field"""
+    lateral = axial = 0.0
+    for t in written_times(case):
+        U = cell_velocities(case, t)
+        mx, my = mesh_velocity(float(t))
+        lateral = max(lateral, abs(U[:, 0] - mx).max(), abs(U[:, 1] - my).max())
+        axial = max(axial, abs(U[:, 2] - U_rest[:, 2]).max())
+    return lateral, axial, last_drive_gradient(case), U
+
+
 def coupled_pipe_RAS(case, ub, D=0.1, model="kOmegaSST", nutWall="nutkWallFunction"):
     """Make a coupled_pipe_case turbulent: the RAS model (kOmegaSST,
     kEpsilon, realizableKE) with wall functions (k, omega or epsilon, and

@@ -73,14 +73,10 @@ boundaryField
 }
 """ % (len(U_rest), rows, A * OMEGA), "volVectorField")
     cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
-    lateral = axial = 0.0
-    for t in cases.written_times(case):
-        U = cases.cell_velocities(case, t)
-        tt = float(t)
-        mesh = A * (math.sin(OMEGA * tt) - math.sin(OMEGA * (tt - dt))) / dt if frame == "lab" else 0
-        lateral = max(lateral, abs(U[:, 0] - mesh).max(), abs(U[:, 1]).max())
-        axial = max(axial, abs(U[:, 2] - U_rest[:, 2]).max())
-    return lateral, axial, cases.last_drive_gradient(case), U
+    return cases.deviation_from_rest(
+        case, U_rest,
+        lambda t: (A * (math.sin(OMEGA * t) - math.sin(OMEGA * (t - dt))) / dt
+                   if frame == "lab" else 0, 0))
 
 
 print("riser frame, 20 steps a period: the flow of the riser at rest")

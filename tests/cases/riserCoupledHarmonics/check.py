@@ -84,14 +84,9 @@ boundaryField
 }
 """ % (len(U_rest), rows, Ux, Uy), "volVectorField")
     cases.run(["riserCoupledFoam", "-case", case], os.path.join(case, "log.riserCoupledFoam"))
-    lateral = axial = 0.0
-    for t in cases.written_times(case):
-        U = cases.cell_velocities(case, t)
-        tt = float(t)
-        mesh = (axis(tt) - axis(tt - dt)) / dt if frame == "lab" else np.zeros(2)
-        lateral = max(lateral, abs(U[:, 0] - mesh[0]).max(), abs(U[:, 1] - mesh[1]).max())
-        axial = max(axial, abs(U[:, 2] - U_rest[:, 2]).max())
-    return lateral, axial, cases.last_drive_gradient(case), U
+    return cases.deviation_from_rest(
+        case, U_rest,
+        lambda t: (axis(t) - axis(t - dt)) / dt if frame == "lab" else np.zeros(2))
 
 
 print("riser frame, 20 steps a period: the flow of the riser at rest")
