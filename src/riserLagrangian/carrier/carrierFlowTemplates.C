@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "carrierFlow.H"
-#include "coreVector.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -90,7 +89,9 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
 {
     if (!exact())
     {
-        return interpolate(materialDerivative_, p);
+        return
+            interpolate(materialDerivative_, p)
+          + riserAcceleration(riser_.particleTime(p.stepFraction()));
     }
     // Du/Dt of the riser flow is uniform, (dU_r/dt, 0, 0): no position
     // (on a moving mesh position() costs two cell-centre evaluations)
