@@ -91,7 +91,10 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
     {
         return
             interpolate(materialDerivative_, p)
-          + riserAcceleration(riser_.particleTime(p.stepFraction()));
+          + riserAcceleration
+            (
+                riser_.height(p), riser_.particleTime(p.stepFraction())
+            );
     }
     // Du/Dt of the riser flow is the riser's acceleration at the height:
     // no position of a riser the same at every height (riserModel::height)
