@@ -9,6 +9,7 @@
 #include "fvcDdt.H"
 #include "fvcGrad.H"
 #include "fvMesh.H"
+#include "wallFvPatch.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -150,15 +151,75 @@ Foam::tmp<Foam::volVectorField> Foam::carrierFlow::meshVelocity() const
 }
 
 
+bool Foam::carrierFlow::movingRiserLab() const
+{
+    return
+        riser_.found()
+     && riser_.frame() == riserModel::simulationFrame::lab
+     && riser_.motion().maxSpeed() > 0;
+}
+
+
+Foam::vector Foam::carrierFlow::wallAcceleration() const
+{
+    vector sum(Zero);
+    scalar area = 0;
+    forAll(U_.boundaryField(), patchi)
+    {
+        if (isA<wallFvPatch>(mesh_.boundary()[patchi]))
+        {
+            const scalarField& magSf = mesh_.magSf().boundaryField()[patchi];
+            sum += gSum
+            (
+                magSf
+               *(U_.boundaryField()[patchi] - U_.oldTime().boundaryField()[patchi])
+            );
+            area += gSum(magSf);
+        }
+    }
+    if (area == 0)
+    {
+        FatalErrorInFunction
+            << "the riser moves in the lab frame, but the mesh of "
+            << U_.name() << " has no wall patch to take its velocity from"
+            << exit(FatalError);
+    }
+    return sum/area/mesh_.time().deltaTValue();
+}
+
+
 Foam::tmp<Foam::volVectorField>
 Foam::carrierFlow::buildMaterialDerivative() const
 {
+    const tmp<volTensorField> tgradU(fvc::grad(U_));
+    tmp<volVectorField> tDuDt;
     if (mesh_.moving())
     {
-        // convect with the velocity relative to the moving cells
-        return fvc::ddt(U_) + ((U_ - meshVelocity()) & fvc::grad(U_));
+        // convect with the velocity relative to the moving cells, held as a
+        // field of its own: the inner product of a temporary vector field
+        // with a tensor field writes its result into the temporary's
+        // storage, through pointers the loop declares not to alias
+        // (OpenFOAM's List_ACCESS, __restrict__), and a product that mixes
+        // the components then reads components it has overwritten (the
+        // axial one took the disturbance's sideways convection
+        // (u . grad) u_x in place of u_x: half the convection of a
+        // particle's wake)
+        const volVectorField Urel(U_ - meshVelocity());
+        tDuDt = fvc::ddt(U_) + (Urel & tgradU());
     }
-    return fvc::ddt(U_) + (U_ & fvc::grad(U_));
+    else
+    {
+        tDuDt = fvc::ddt(U_) + (U_ & tgradU());
+    }
+    if (movingRiserLab())
+    {
+        // the carrier's acceleration relative to the riser: its change over
+        // the step less its wall's (the riser's), which the particle's
+        // Du/Dt takes at the particle's time instead (materialDerivative)
+        tDuDt.ref() -=
+            dimensionedVector("aWall", dimAcceleration, wallAcceleration());
+    }
+    return tDuDt;
 }
 
 

@@ -4,7 +4,6 @@
 \*---------------------------------------------------------------------------*/
 
 #include "carrierFlow.H"
-#include "coreVector.H"
 
 // * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
 
@@ -90,7 +89,12 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
 {
     if (!exact())
     {
-        return interpolate(materialDerivative_, p);
+        return
+            interpolate(materialDerivative_, p)
+          + riserAcceleration
+            (
+                riser_.height(p), riser_.particleTime(p.stepFraction())
+            );
     }
     // Du/Dt of the riser flow is the riser's acceleration at the height:
     // no position of a riser the same at every height (riserModel::height)
