@@ -36,7 +36,11 @@ Description
     leaves b_r = (1 - alpha_c) a_r, nothing without particles; in the lab
     frame (the mesh and the wall moving) b_r = a_r, the change of the
     mesh's velocity over the step, (x_c(t) - 2 x_c(t - dt) + x_c(t - 2 dt))
-    / dt^2, given to the cells (the moving wall's flux is the wall's).
+    / dt^2, given to the cells (the moving wall's flux is the wall's). The
+    particles' reaction is that of their whole fluid forces: with the parts
+    of the added mass and the history force that their inertia takes
+    (-C_A m_f dv/dt, HistoryParcel), without which the added mass's
+    reaction, -C_A m_f Du/Dt, would depend on the frame.
 
     Each step: store the particles' global positions and move the mesh (lab
     frame: constant/dynamicMeshDict, solidBodyMotionFunction
@@ -49,12 +53,20 @@ Description
     face fluxes (as the pressure gradient does, so that a pressure gradient
     balances a uniform force exactly), each followed by the drive's
     adjustment to the target bulk velocity (by the momentum matrix's own
-    response to a uniform axial acceleration, riserDrive); the turbulence
+    response to a uniform axial acceleration, riserDrive); the face flux's
+    correction for the time derivative (OpenFOAM's ddtCorr of the Euler
+    scheme) weighted by the carrier's flux relative to the mesh in either
+    frame (OpenFOAM's moving-mesh form weighs it by the absolute flux,
+    which in the lab frame holds the riser's velocity); the turbulence
     model's correction; then evolve the cloud in the carrier of the step:
     its velocity at the step's end, and its change over the step, which the
     fluid stress and the added mass take through the carrier's material
     derivative (carrierFlow: fvc::ddt(U), plus the convective part relative
-    to the moving mesh). Moving the particles before the carrier would give
+    to the moving mesh). In the lab frame the carrier moves with its wall,
+    at the mesh's velocity over the step, and carrierFlow gives the
+    particles the carrier relative to the wall and the riser's velocity
+    and acceleration at their time instead, as the riser frame does.
+    Moving the particles before the carrier would give
     them the carrier of the step before with no change over their step: in
     the lab frame they would not feel the riser's acceleration through the
     fluid, nor in either frame the local change of an unsteady carrier.
@@ -260,6 +272,45 @@ int main(int argc, char *argv[])
             }
         }
         return tflux;
+    };
+
+    // The face flux's correction for the carrier's time derivative (the
+    // time part of the Rhie-Chow interpolation, fvc::ddtCorr of the Euler
+    // scheme): (phi_0 - S_f . (U_0)_f)/dt, phi_0 the old flux (on a moving
+    // mesh the face velocity's, S_f . Uf_0), weighted as OpenFOAM weighs it,
+    // 1 - min(|phi_0 - S_f . (U_0)_f|/|phi_0|, 1) and 0 at the walls, but
+    // with phi_0 the carrier's flux relative to the mesh in either frame.
+    // The difference phi_0 - S_f . (U_0)_f is the same in both frames (the
+    // riser's uniform velocity cancels); OpenFOAM's moving-mesh form
+    // weighs it by the absolute flux, which in the lab frame holds the
+    // riser's velocity, so that where the particles disturb the carrier
+    // (two-way) the lab frame corrected the flux more than the riser frame,
+    // whatever the step
+    auto ddtFluxCorrection = [&]()
+    {
+        const surfaceScalarField phi0
+        (
+            Uf.valid()
+          ? surfaceScalarField(mesh.Sf() & Uf().oldTime())
+          : phi.oldTime()
+        );
+        const surfaceScalarField phiCorr
+        (
+            phi0 - fvc::dotInterpolate(mesh.Sf(), U.oldTime())
+        );
+        tmp<fv::ddtScheme<vector>> scheme
+        (
+            fv::ddtScheme<vector>::New
+            (
+                mesh,
+                mesh.ddtScheme("ddt(" + U.name() + ')')
+            )
+        );
+        return tmp<surfaceScalarField>
+        (
+            scheme.ref().fvcDdtPhiCoeff(U.oldTime(), phi.oldTime(), phiCorr)
+           *phiCorr/runTime.deltaT()
+        );
     };
 
     turbulence->validate();

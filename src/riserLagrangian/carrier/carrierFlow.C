@@ -160,20 +160,16 @@ bool Foam::carrierFlow::movingRiserLab() const
 }
 
 
-Foam::vector Foam::carrierFlow::wallAcceleration() const
+Foam::vector Foam::carrierFlow::wallMean(const volVectorField& U) const
 {
     vector sum(Zero);
     scalar area = 0;
-    forAll(U_.boundaryField(), patchi)
+    forAll(U.boundaryField(), patchi)
     {
         if (isA<wallFvPatch>(mesh_.boundary()[patchi]))
         {
             const scalarField& magSf = mesh_.magSf().boundaryField()[patchi];
-            sum += gSum
-            (
-                magSf
-               *(U_.boundaryField()[patchi] - U_.oldTime().boundaryField()[patchi])
-            );
+            sum += gSum(magSf*U.boundaryField()[patchi]);
             area += gSum(magSf);
         }
     }
@@ -184,7 +180,14 @@ Foam::vector Foam::carrierFlow::wallAcceleration() const
             << U_.name() << " has no wall patch to take its velocity from"
             << exit(FatalError);
     }
-    return sum/area/mesh_.time().deltaTValue();
+    return sum/area;
+}
+
+
+Foam::vector Foam::carrierFlow::wallAcceleration() const
+{
+    return
+        (wallMean(U_) - wallMean(U_.oldTime()))/mesh_.time().deltaTValue();
 }
 
 
@@ -227,6 +230,12 @@ Foam::tmp<Foam::volVectorField> Foam::carrierFlow::buildVelocityChange() const
 {
     tmp<volVectorField> tchange(U_ - U_.oldTime());
     steadyStep_ = gMax(mag(tchange().primitiveField())()) == 0;
+    if (movingRiserLab())
+    {
+        wall_.timeIndex = mesh_.time().timeIndex();
+        wall_.end = wallMean(U_);
+        wall_.start = wallMean(U_.oldTime());
+    }
     return tchange;
 }
 

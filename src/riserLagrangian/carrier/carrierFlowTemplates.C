@@ -49,11 +49,29 @@ Foam::vector Foam::carrierFlow::velocity
     {
         // U at the particle's time: linear in time over the flow step
         const scalar lag = 1 - p.stepFraction();
-        if (lag == 0 || (velocityChange_.field && steadyStep_))
+        vector u = Uc;
+        if (lag != 0 && !(velocityChange_.field && steadyStep_))
         {
-            return Uc;
+            u -= lag*interpolate(velocityChange_, p);
         }
-        return Uc - lag*interpolate(velocityChange_, p);
+        if (movingRiserLab())
+        {
+            // the riser's velocity at the particle's time in place of the
+            // wall's, which the carrier moves with over the step
+            if (wall_.timeIndex != mesh_.time().timeIndex())
+            {
+                FatalErrorInFunction
+                    << "carrier velocity requested outside"
+                    << " cacheVelocityChange(true/false)" << abort(FatalError);
+            }
+            u +=
+                riserVelocity
+                (
+                    riser_.height(p), riser_.particleTime(p.stepFraction())
+                )
+              - (wall_.end - lag*(wall_.end - wall_.start));
+        }
+        return u;
     }
     return fromCore
     (
@@ -85,7 +103,11 @@ Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
 
 
 template<class ParcelType>
-Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
+Foam::vector Foam::carrierFlow::materialDerivative
+(
+    const ParcelType& p,
+    const scalar dt
+) const
 {
     if (!exact())
     {
@@ -93,7 +115,7 @@ Foam::vector Foam::carrierFlow::materialDerivative(const ParcelType& p) const
             interpolate(materialDerivative_, p)
           + riserAcceleration
             (
-                riser_.height(p), riser_.particleTime(p.stepFraction())
+                riser_.height(p), riser_.particleTime(p.stepFraction()), dt
             );
     }
     // Du/Dt of the riser flow is the riser's acceleration at the height:

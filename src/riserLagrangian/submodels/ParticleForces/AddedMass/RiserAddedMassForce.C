@@ -55,7 +55,7 @@ Foam::forceSuSp Foam::RiserAddedMassForce<CloudType>::calcCoupled
             riser::addedMassForce
             (
                 CA_, mass*td.rhoc()/p.rho(),
-                toCore(this->carrier_.materialDerivative(p))
+                toCore(this->carrier_.materialDerivative(p, dt))
             )
         ),
         0

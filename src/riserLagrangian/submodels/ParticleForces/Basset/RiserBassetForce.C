@@ -358,7 +358,7 @@ void Foam::RiserBassetForce<CloudType>::endStep()
     {
         const endOfStep<typename CloudType::parcelType> done(p);
         const vector g =
-            carrier_.materialDerivative(p) - (p.U() - p.UNode())/dt;
+            carrier_.materialDerivative(p, dt) - (p.U() - p.UNode())/dt;
         if (p.historyStarted())
         {
             kernel_.push(p.history(), g);
@@ -413,7 +413,7 @@ Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
             KH*
             (
                 kernel_.firstKnownPart(p.history().slip0)
-              + kernel_.firstWeight()*carrier_.materialDerivative(p)
+              + kernel_.firstWeight()*carrier_.materialDerivative(p, dt)
             ),
             0
         );
@@ -430,7 +430,7 @@ Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
     }
     return forceSuSp
     (
-        KH*(p.historyKnown() + kernel_.newestWeight()*carrier_.materialDerivative(p)),
+        KH*(p.historyKnown() + kernel_.newestWeight()*carrier_.materialDerivative(p, dt)),
         0
     );
 }

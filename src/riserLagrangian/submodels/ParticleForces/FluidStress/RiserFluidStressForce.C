@@ -70,7 +70,7 @@ Foam::forceSuSp Foam::RiserFluidStressForce<CloudType>::calcCoupled
     // rho_c V_p Du/Dt, V_p = mass/rho_p, with the fluid's inertial
     // acceleration (the frame's acceleration added in the riser frame)
     const vector a =
-        carrier_.materialDerivative(p)
+        carrier_.materialDerivative(p, dt)
       + riser_.frameAcceleration
         (
             riser_.height(p), riser_.particleTime(p.stepFraction())
