@@ -112,6 +112,13 @@ for c in ("0.5", "0", "-1", "2", "1e300"):
            "entry 'sourceTerms { schemes { U semiImplicit %s; } }'" % ("1e+300" if c == "1e300" else c),
            lambda case, c=c: (cloud("coupled +false;", "coupled true;")(case),
                               cloud(r"U semiImplicit 1;", "U semiImplicit %s;" % c)(case)), io=True)
+# the face flux's time correction and the particles' Du/Dt are Euler's
+for scheme in ("backward", "CrankNicolson 0.9"):
+    expect("ddt scheme %s (the carrier steps with Euler)" % scheme,
+           "entry 'ddtSchemes { ddt(U) ... }' = %s" % scheme.split()[0],
+           lambda case, scheme=scheme: foamfields.edit(
+               os.path.join(case, "system/fvSchemes"), r"default +Euler;",
+               "default %s;" % scheme), io=True)
 expect("voidage in a one-way run (its carrier is not displaced)",
        "entry 'voidage' = wenYu: the cloud is not coupled (coupled false)",
        cloud(r"wallCorrectedDrag \{ law continuous; \}",
