@@ -7,12 +7,25 @@
 // carries upward Poiseuille flow about the moving axis (pipe radius R = D/2,
 // centre-line speed u_cm), with r = (x - x_c, y - y_c, 0) the offset from
 // the axis, all of the riser's kinematics at the point's height z:
-//   u       = ( U_r, V_r, u_cm [1 - |r|^2 / R^2] )
+//   u       = ( U_r, V_r, w ),   w = u_cm [1 - |r|^2 / R^2]
 //   Du/Dt   = ( dU_r/dt, dV_r/dt, 0 )   (exact for a riser whose motion is
 //                                  the same at every z: the local change of
 //                                  u_z as the axis moves cancels its
 //                                  convection by (U_r, V_r))
 //   curl u  = ( -2 u_cm (y - y_c) / R^2, 2 u_cm (x - x_c) / R^2, 0 )
+// A riser whose motion varies along z (slope s = d(x_c, y_c)/dz, its rate
+// s_t = d(U_r, V_r)/dz, curvature c = d^2(x_c, y_c)/dz^2) is sheared: each
+// horizontal cross-section is the pipe's about the local axis (the slope
+// neglected in the cross-section, doc/theory.md section 2.2), and the fluid
+// follows it, each fluid particle keeping its offset r from the local axis
+// and its axial speed w(|r|):
+//   u       = ( U_r + w s_x, V_r + w s_y, w )
+//   Du/Dt   = ( a_r + 2 w s_t + w^2 c, 0 )   (the axis' acceleration
+//                                  along the fluid's path z = z_0 + w t)
+//   curl u  = ( g_y - s_t,y + (g . s) s_y - w c_y,
+//              -g_x + s_t,x - (g . s) s_x + w c_x,
+//               g_x s_y - g_y s_x ),   g = grad w = -2 u_cm r / R^2,
+// each exact for that field (|r| is constant along its paths).
 // Outside the pipe the formulas are continued analytically; callers decide
 // what a position outside the pipe means. The pipe's wall is the
 // riser::CylinderWall of the same diameter and motion (wall()).
@@ -60,23 +73,45 @@ public:
     //- Carrier velocity u(x, t).
     Vector velocity(const Vector& x, double t) const
     {
+        if (!motion().uniformAlongAxis()) return velocity(x, motion().state(x.z(), t));
         return velocityAt(motion().radialOffset(x, t), motion().velocity(x.z(), t));
     }
 
     //- u at x, with the riser's kinematics s = motion().state(x_z, t)
     Vector velocity(const Vector& x, const AxisState& s) const
     {
-        return velocityAt(motion().radialOffset(x, s), s.velocity);
+        Vector u = velocityAt(motion().radialOffset(x, s), s.velocity);
+        if (!motion().uniformAlongAxis())
+        {
+            u.x() += u.z()*s.slope.x();
+            u.y() += u.z()*s.slope.y();
+        }
+        return u;
     }
 
     //- Material derivative Du/Dt(x, t).
     Vector materialDerivative(const Vector& x, double t) const
     {
+        if (!motion().uniformAlongAxis())
+        {
+            return materialDerivative(x, motion().state(x.z(), t));
+        }
         return motion().acceleration(x.z(), t);
     }
 
-    //- Du/Dt with the riser's kinematics s at the point (uniform in its
-    //  cross-section)
+    //- Du/Dt at x with the riser's kinematics s at the point
+    Vector materialDerivative(const Vector& x, const AxisState& s) const
+    {
+        if (!motion().uniformAlongAxis())
+        {
+            const double w = axialSpeed(motion().radialOffset(x, s));
+            return s.acceleration + 2.0*w*s.slopeRate + w*w*s.curvature;
+        }
+        return s.acceleration;
+    }
+
+    //- Du/Dt with the riser's kinematics s of a riser the same at every
+    //  height (uniform in its cross-section)
     Vector materialDerivative(const AxisState& s) const
     {
         return s.acceleration;
@@ -85,21 +120,39 @@ public:
     //- Vorticity curl u (x, t).
     Vector vorticity(const Vector& x, double t) const
     {
+        if (!motion().uniformAlongAxis()) return vorticity(x, motion().state(x.z(), t));
         return vorticityAt(motion().radialOffset(x, t));
     }
 
     //- curl u at x, with the riser's kinematics s at the point
     Vector vorticity(const Vector& x, const AxisState& s) const
     {
-        return vorticityAt(motion().radialOffset(x, s));
+        const Vector r = motion().radialOffset(x, s);
+        Vector omega = vorticityAt(r);
+        if (!motion().uniformAlongAxis())
+        {
+            const double R = radius(), w = axialSpeed(r);
+            const Vector g = (-2.0*uCentre_/(R*R))*r;
+            const double gs = g.dot(s.slope);
+            omega.x() += -s.slopeRate.y() + gs*s.slope.y() - w*s.curvature.y();
+            omega.y() += s.slopeRate.x() - gs*s.slope.x() + w*s.curvature.x();
+            omega.z() += g.x()*s.slope.y() - g.y()*s.slope.x();
+        }
+        return omega;
     }
 
 private:
     //- u at offset r from the axis of a riser moving at Ur
     Vector velocityAt(const Vector& r, const Vector& Ur) const
     {
+        return Vector(Ur.x(), Ur.y(), axialSpeed(r));
+    }
+
+    //- w at offset r from the axis
+    double axialSpeed(const Vector& r) const
+    {
         const double R = radius();
-        return Vector(Ur.x(), Ur.y(), uCentre_*(1.0 - r.squaredNorm()/(R*R)));
+        return uCentre_*(1.0 - r.squaredNorm()/(R*R));
     }
 
     //- curl u at offset r from the axis

@@ -104,6 +104,8 @@ public:
         return std::hypot(bound(x_, 2), bound(y_, 2));
     }
 
+    double maxSlope() const override { return 0.0; }
+
     double axisOffsetBound(double t) const override { return axis(0.0, t).norm(); }
 
     bool steady() const override
@@ -124,24 +126,12 @@ public:
     //  does); std::domain_error if they have several
     double angularFrequency() const override
     {
-        double omega = 0.0;
+        std::vector<std::pair<double, double>> terms;
         for (const std::vector<Harmonic>* list : {&x_, &y_})
         {
-            for (const Harmonic& h : *list)
-            {
-                if (h.amplitude == 0.0 || h.omega == 0.0) continue;
-                if (omega != 0.0 && h.omega != omega)
-                {
-                    throw std::domain_error
-                    (
-                        "riser::HarmonicsMotion: the harmonics have several"
-                        " frequencies, and the riser's frequency is asked for"
-                    );
-                }
-                omega = h.omega;
-            }
+            for (const Harmonic& h : *list) terms.emplace_back(h.amplitude, h.omega);
         }
-        return omega;
+        return commonAngularFrequency("riser::HarmonicsMotion: the harmonics", terms);
     }
 
 private:

@@ -7,10 +7,13 @@
 //   acceleration(z, t) = (dU_r/dt, dV_r/dt, 0)
 // The riser frame translates with the axis: a position relative to the
 // riser is x - axis(x_z, t), a velocity relative to it v - velocity(x_z, t),
-// both asked at the point's own height x_z.
+// both asked at the point's own height x_z. A motion that varies along the
+// riser (riser::ModesMotion) also has derivatives along z: the slope
+// d(x_c, y_c)/dz, its rate of change d(U_r, V_r)/dz, and the curvature
+// d^2(x_c, y_c)/dz^2 (zero where the motion is the same at every height).
 //
 // A motion is a run-time selected model (riser::SinusoidMotion,
-// riser::HarmonicsMotion); it is immutable, and the flow, its wall and the
+// riser::HarmonicsMotion, riser::ModesMotion); it is immutable, and the flow, its wall and the
 // OpenFOAM layer share one instance (MotionPtr). A virtual call per
 // evaluation is the price of the choice: next to the sines it evaluates it
 // is small, and no evaluation allocates.
@@ -23,15 +26,22 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+#include <vector>
 
 namespace riser {
 
 //- The axis' kinematics at one height and time (z components zero)
 struct AxisState
 {
-    Vector position;        //!< (x_c, y_c, 0) [m]
-    Vector velocity;        //!< (U_r, V_r, 0) [m/s]
-    Vector acceleration;    //!< (dU_r/dt, dV_r/dt, 0) [m/s^2]
+    Vector position = Vector::Zero();       //!< (x_c, y_c, 0) [m]
+    Vector velocity = Vector::Zero();       //!< (U_r, V_r, 0) [m/s]
+    Vector acceleration = Vector::Zero();   //!< (dU_r/dt, dV_r/dt, 0) [m/s^2]
+    Vector slope = Vector::Zero();          //!< d(x_c, y_c)/dz [-]
+    Vector slopeRate = Vector::Zero();      //!< d(U_r, V_r)/dz [1/s]
+    Vector curvature = Vector::Zero();      //!< d^2(x_c, y_c)/dz^2 [1/m]
 };
 
 class RiserMotion
@@ -57,6 +67,8 @@ public:
     //  acceleration of the riser (what the contact planner allows for)
     virtual double maxSpeed() const = 0;
     virtual double maxAcceleration() const = 0;
+    //- The largest slope |d(x_c, y_c)/dz| over every height and time
+    virtual double maxSlope() const = 0;
     //- The largest distance |(x_c, y_c)| of the axis from the z axis over
     //  every height at time t
     virtual double axisOffsetBound(double t) const = 0;
@@ -79,14 +91,27 @@ public:
     Vector toRiserFrame(const Vector& x, double t) const { return x - axis(x.z(), t); }
     //- Riser-frame position to the lab
     Vector toLabFrame(const Vector& x, double t) const { return x + axis(x.z(), t); }
-    //- Lab velocity v at x to the velocity relative to the riser
+    //- Lab velocity v at x to the velocity relative to the riser: the rate
+    //  of change of x - axis(x_z, t) along the path, v - U_r - v_z s (the
+    //  slope s of a riser that varies along z: a body rising along the
+    //  sloping axis keeps its offset from it)
     Vector relativeVelocity(const Vector& x, const Vector& v, double t) const
     {
+        if (!uniformAlongAxis())
+        {
+            const AxisState s = state(x.z(), t);
+            return v - s.velocity - v.z()*s.slope;
+        }
         return v - velocity(x.z(), t);
     }
     //- Velocity relative to the riser at x to the lab's
     Vector labVelocity(const Vector& x, const Vector& v, double t) const
     {
+        if (!uniformAlongAxis())
+        {
+            const AxisState s = state(x.z(), t);
+            return v + s.velocity + v.z()*s.slope;
+        }
         return v + velocity(x.z(), t);
     }
 
@@ -112,6 +137,31 @@ private:
 
 //- The shared, immutable motion of a flow, its wall and their copies
 using MotionPtr = std::shared_ptr<const RiserMotion>;
+
+//- The one angular frequency of the terms (amplitude, omega) that move (0
+//  if none does); std::domain_error, naming what, if they have several
+inline double commonAngularFrequency
+(
+    const std::string& what,
+    const std::vector<std::pair<double, double>>& terms
+)
+{
+    double omega = 0.0;
+    for (const std::pair<double, double>& term : terms)
+    {
+        if (term.first == 0.0 || term.second == 0.0) continue;
+        if (omega != 0.0 && term.second != omega)
+        {
+            throw std::domain_error
+            (
+                what + " have several frequencies, and the riser's frequency"
+                " is asked for"
+            );
+        }
+        omega = term.second;
+    }
+    return omega;
+}
 
 } // namespace riser
 

@@ -75,6 +75,7 @@ public:
     double maxSpeed() const override { return A_*omega_; }
     //- A omega^2
     double maxAcceleration() const override { return A_*omega_*omega_; }
+    double maxSlope() const override { return 0.0; }
     //- |x_c(t)|
     double axisOffsetBound(double t) const override
     {

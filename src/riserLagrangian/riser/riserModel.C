@@ -10,6 +10,7 @@
 #include "IOdictionary.H"
 #include "unitConversion.H"
 #include "riser/harmonicsMotion.hpp"
+#include "riser/modesMotion.hpp"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -23,6 +24,8 @@ const Foam::scalar Foam::riserModel::maxSpeed = 100;
 const Foam::scalar Foam::riserModel::maxAmplitude = 10;
 const Foam::scalar Foam::riserModel::maxFrequency = 1000;
 const Foam::scalar Foam::riserModel::maxAcceleration = 1e4;
+const Foam::scalar Foam::riserModel::maxSlope = 0.05;
+const Foam::scalar Foam::riserModel::maxModeNumber = 1000;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -87,6 +90,20 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
         );
         steady_ = flow_->motion().steady();
         uniform_ = lab_->motion().uniformAlongAxis();
+        if (!uniform_)
+        {
+            // the sheared riser's carrier and frame terms (riser::RiserFlow,
+            // doc/theory.md section 2.2) are the mesh-free engine's; the
+            // clouds' frame force, walls and interpolated carriers take
+            // the riser as the same at every height
+            FatalIOErrorInFunction(dict_)
+                << "the riser's motion (type " << lab_->motion().type()
+                << ") varies along its length: the clouds of riserParcelFoam"
+                << " and riserCoupledFoam take the riser as the same at every"
+                << " height; run this riser with the mesh-free engine"
+                << " riserParticle, or give a motion the same at every height"
+                << " (sinusoid, harmonics)" << nl << exit(FatalIOError);
+        }
         if (steady_)
         {
             last_.flow = flow_->motion().state(0, 0);
@@ -188,6 +205,57 @@ riser::MotionPtr readSinusoid(const dictionary& dict)
 }
 
 
+//- The rows of the list entry key of dict (empty without it), each of N
+//  finite numbers within [lo, hi]: a rowName (harmonic, mode) of the
+//  form rowForm, its fields named by names (for the messages)
+template<int N>
+List<FixedList<scalar, N>> readRows
+(
+    const dictionary& dict,
+    const word& key,
+    const char* rowName,
+    const char* rowForm,
+    const char* const (&names)[N],
+    const scalar (&lo)[N],
+    const scalar (&hi)[N]
+)
+{
+    if (!dict.found(key))
+    {
+        return List<FixedList<scalar, N>>();
+    }
+    // numbers only: nan and inf are words to the parser
+    for (const token& t : dict.lookup(key))
+    {
+        if (!t.isNumber() && !t.isPunctuation())
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << key << "': a list of " << rowForm
+                << " of finite numbers, found " << t << nl
+                << exit(FatalIOError);
+        }
+    }
+    const List<FixedList<scalar, N>> rows =
+        dict.get<List<FixedList<scalar, N>>>(key);
+    forAll(rows, i)
+    {
+        for (label k = 0; k < N; ++k)
+        {
+            const scalar v = rows[i][k];
+            if (!(std::isfinite(v) && v >= lo[k] && v <= hi[k]))
+            {
+                FatalIOErrorInFunction(dict)
+                    << "entry '" << key << "' " << rowName << " " << i
+                    << ": " << names[k] << " = " << v
+                    << " outside the allowed range [" << lo[k] << ", "
+                    << hi[k] << "]" << nl << exit(FatalIOError);
+            }
+        }
+    }
+    return rows;
+}
+
+
 //- The harmonics of the list entry key of dict (empty without it)
 std::vector<riser::Harmonic> readHarmonicList
 (
@@ -196,45 +264,98 @@ std::vector<riser::Harmonic> readHarmonicList
 )
 {
     using constant::mathematical::twoPi;
-
     std::vector<riser::Harmonic> list;
-    if (!dict.found(key))
+    for
+    (
+        const FixedList<scalar, 3>& e
+      : readRows<3>
+        (
+            dict, key, "harmonic",
+            "(amplitude [m] frequency [Hz] phase [rad])",
+            {"amplitude", "frequency", "phase"},
+            {0, 0, -twoPi}, {rm::maxAmplitude, rm::maxFrequency, twoPi}
+        )
+    )
     {
-        return list;
-    }
-    // numbers only: nan and inf are words to the parser
-    for (const token& t : dict.lookup(key))
-    {
-        if (!t.isNumber() && !t.isPunctuation())
-        {
-            FatalIOErrorInFunction(dict)
-                << "entry '" << key << "': a list of (amplitude [m] frequency"
-                << " [Hz] phase [rad]) of finite numbers, found " << t
-                << nl << exit(FatalIOError);
-        }
-    }
-    const List<FixedList<scalar, 3>> entries =
-        dict.get<List<FixedList<scalar, 3>>>(key);
-    forAll(entries, i)
-    {
-        const FixedList<scalar, 3>& e = entries[i];
-        const char* names[] = {"amplitude", "frequency", "phase"};
-        const scalar lo[] = {0, 0, -twoPi};
-        const scalar hi[] = {rm::maxAmplitude, rm::maxFrequency, twoPi};
-        for (label k = 0; k < 3; ++k)
-        {
-            if (!(std::isfinite(e[k]) && e[k] >= lo[k] && e[k] <= hi[k]))
-            {
-                FatalIOErrorInFunction(dict)
-                    << "entry '" << key << "' harmonic " << i << ": "
-                    << names[k] << " = " << e[k] << " outside the allowed"
-                    << " range [" << lo[k] << ", " << hi[k] << "]"
-                    << nl << exit(FatalIOError);
-            }
-        }
         list.push_back(riser::Harmonic{e[0], twoPi*e[1], e[2]});
     }
     return list;
+}
+
+
+//- The modes of the list entry key of dict (empty without it)
+std::vector<riser::Mode> readModeList(const dictionary& dict, const word& key)
+{
+    using constant::mathematical::twoPi;
+    std::vector<riser::Mode> list;
+    for
+    (
+        const FixedList<scalar, 4>& e
+      : readRows<4>
+        (
+            dict, key, "mode",
+            "(n amplitude [m] frequency [Hz] phase [rad])",
+            {"n", "amplitude", "frequency", "phase"},
+            {1, 0, 0, -twoPi},
+            {rm::maxModeNumber, rm::maxAmplitude, rm::maxFrequency, twoPi}
+        )
+    )
+    {
+        if (e[0] != std::round(e[0]))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << key << "': mode number n = " << e[0]
+                << " is not a whole number (n = 1, 2, ... "
+                << rm::maxModeNumber << ")" << nl << exit(FatalIOError);
+        }
+        list.push_back
+        (
+            riser::Mode{static_cast<int>(e[0]), e[1], twoPi*e[2], e[3]}
+        );
+    }
+    return list;
+}
+
+
+//- The modes of a motion dictionary (riserModel.H, Usage)
+riser::MotionPtr readModes(const dictionary& m)
+{
+    checkedEntry::allowedKeys(m, {"type", "foot", "length", "wave", "x", "y"});
+    const scalar foot = checkedEntry::inRange
+    (
+        m, "foot", -1e6, true, 1e6, true
+    );
+    const scalar length = checkedEntry::inRange
+    (
+        m, "length", 0, false, 1e6, true
+    );
+    const riser::ModesMotion::Wave wave =
+        m.found("wave")
+      ? checkedEntry::choice<riser::ModesMotion::Wave>
+        (
+            m, "wave",
+            {
+                {"standing", riser::ModesMotion::Wave::standing},
+                {"travelling", riser::ModesMotion::Wave::travelling}
+            }
+        )
+      : riser::ModesMotion::Wave::standing;
+    const riser::MotionPtr motion = riser::ModesMotion::make
+    (
+        foot, length, wave, readModeList(m, "x"), readModeList(m, "y")
+    );
+    if (motion->maxSlope() > rm::maxSlope)
+    {
+        FatalIOErrorInFunction(m)
+            << "the modes give the riser a slope of up to "
+            << motion->maxSlope() << " (hypot of the sums of amplitude n pi"
+            << " / length over x and over y); the sheared riser's cross-"
+            << "sections and carrier neglect the slope (errors of order"
+            << " slope^2), which is allowed up to " << rm::maxSlope
+            << ": lower the amplitudes or the mode numbers"
+            << nl << exit(FatalIOError);
+    }
+    return motion;
 }
 
 
@@ -257,11 +378,15 @@ riser::MotionPtr readMotion(const dictionary& dict)
         }
     }
     const dictionary& m = dict.subDict("motion");
-    enum class motionType { sinusoid, harmonics };
+    enum class motionType { sinusoid, harmonics, modes };
     const motionType type = checkedEntry::choice<motionType>
     (
         m, "type",
-        {{"sinusoid", motionType::sinusoid}, {"harmonics", motionType::harmonics}}
+        {
+            {"sinusoid", motionType::sinusoid},
+            {"harmonics", motionType::harmonics},
+            {"modes", motionType::modes}
+        }
     );
     if (type == motionType::sinusoid)
     {
@@ -269,11 +394,19 @@ riser::MotionPtr readMotion(const dictionary& dict)
         return readSinusoid(m);
     }
 
-    checkedEntry::allowedKeys(m, {"type", "x", "y"});
-    const riser::MotionPtr motion = riser::HarmonicsMotion::make
-    (
-        readHarmonicList(m, "x"), readHarmonicList(m, "y")
-    );
+    riser::MotionPtr motion;
+    if (type == motionType::harmonics)
+    {
+        checkedEntry::allowedKeys(m, {"type", "x", "y"});
+        motion = riser::HarmonicsMotion::make
+        (
+            readHarmonicList(m, "x"), readHarmonicList(m, "y")
+        );
+    }
+    else
+    {
+        motion = readModes(m);
+    }
     if
     (
         motion->maxSpeed() > rm::maxSpeed
@@ -281,7 +414,7 @@ riser::MotionPtr readMotion(const dictionary& dict)
     )
     {
         FatalIOErrorInFunction(m)
-            << "the harmonics give the wall a speed of up to "
+            << "the " << motion->type() << " give the wall a speed of up to "
             << motion->maxSpeed() << " m/s and an acceleration of up to "
             << motion->maxAcceleration() << " m/s^2 (hypot of the sums of"
             << " amplitude omega and amplitude omega^2 over x and over y);"
