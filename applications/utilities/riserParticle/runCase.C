@@ -69,7 +69,7 @@ void Foam::runCase
         << "# riserParticle contacts: origId start end side(+1: x > x_c)"
         << " maxOverlap impactSpeed reboundSpeed" << nl;
 
-    label finished = 0, lost = 0, failed = 0;
+    label finished = 0, lost = 0, failed = 0, leftTable = 0;
     forAll(scene.releases, i)
     {
         const riserRelease& r = scene.releases[i];
@@ -104,6 +104,14 @@ void Foam::runCase
         {
             st = integ.run(law, r.t0, s0, scene.endTime, scene.deltaT, obs);
         }
+        catch (const std::out_of_range& e)
+        {
+            // a tabulated riser's motion ends at its top (and last time)
+            ++leftTable;
+            Info<< "particle " << i << " left the riser motion table: "
+                << e.what() << "; its rows stop at the last before" << endl;
+            continue;
+        }
         catch (const riser::IntegrationFailure& e)
         {
             ++failed;
@@ -133,7 +141,12 @@ void Foam::runCase
     }
     Info<< "particles: " << scene.releases.size() << " released, " << finished
         << " inside the pipe to the end, " << lost << " outside, " << failed
-        << " failed" << nl
+        << " failed";
+    if (leftTable)
+    {
+        Info<< ", " << leftTable << " left the riser motion table";
+    }
+    Info<< nl
         << "wrote " << dir/"particles.dat" << " and " << dir/"contacts.dat" << endl;
     if (failed)
     {
