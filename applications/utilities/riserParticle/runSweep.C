@@ -72,10 +72,13 @@ sweepRow sweepCase
     {
         const riser::RiserFlow& base = scene.riser;
         riserScene s = scene;
-        s.riser = riser::RiserFlow
+        s.riser = base.withMotion
         (
-            base.diameter(), base.centreLineSpeed(), A, 2*constant::mathematical::pi*f,
-            static_cast<const riser::SinusoidMotion&>(base.motion()).phase()
+            riser::SinusoidMotion::make
+            (
+                A, 2*constant::mathematical::pi*f,
+                static_cast<const riser::SinusoidMotion&>(base.motion()).phase()
+            )
         );
         // the release relative to the case's own riser, placed in this one
         riserRelease r = scene.releases.first();

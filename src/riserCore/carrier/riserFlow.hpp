@@ -34,6 +34,7 @@
 #ifndef RISERCORE_CARRIER_RISERFLOW_HPP
 #define RISERCORE_CARRIER_RISERFLOW_HPP
 
+#include "carrier/turbulentPipeProfile.hpp"
 #include "checks.hpp"
 #include "riser/riserMotion.hpp"
 #include "riser/sinusoidMotion.hpp"
@@ -57,15 +58,41 @@ public:
         requireNonNegative("riser::RiserFlow", "u_cm", uCentre);
     }
 
+    //- D: pipe diameter [m]; the turbulent profile of that diameter (its
+    //  centre-line speed u_cm) in place of Poiseuille's; motion: the riser's
+    RiserFlow(double D, std::shared_ptr<const TurbulentPipeProfile> profile, MotionPtr motion)
+    :
+        RiserFlow(D, profile->centreLineSpeed(), std::move(motion))
+    {
+        if (std::abs(profile->radius() - radius()) > 1e-12*radius())
+        {
+            throw std::invalid_argument
+            (
+                "riser::RiserFlow: the turbulent profile's diameter is not the riser's"
+            );
+        }
+        turbulent_ = std::move(profile);
+    }
+
     //- D, uCentre, and a sinusoid's A [m], omega [rad/s], phi0 [rad]
     RiserFlow(double D, double uCentre, double A, double omega, double phi0)
     :
         RiserFlow(D, uCentre, SinusoidMotion::make(A, omega, phi0))
     {}
 
+    //- The same carrier (diameter, profile) on another motion
+    RiserFlow withMotion(MotionPtr motion) const
+    {
+        RiserFlow other(diameter(), uCentre_, std::move(motion));
+        other.turbulent_ = turbulent_;
+        return other;
+    }
+
     double diameter() const { return wall_.diameter(); }
     double radius() const { return wall_.radius(); }
     double centreLineSpeed() const { return uCentre_; }
+    //- The turbulent profile (null: Poiseuille's)
+    const TurbulentPipeProfile* turbulentProfile() const { return turbulent_.get(); }
     const RiserMotion& motion() const { return wall_.motion(); }
     const MotionPtr& motionPtr() const { return wall_.motionPtr(); }
     const CylinderWall& wall() const { return wall_; }
@@ -132,7 +159,7 @@ public:
         if (!motion().uniformAlongAxis())
         {
             const double R = radius(), w = axialSpeed(r);
-            const Vector g = (-2.0*uCentre_/(R*R))*r;
+            const Vector g = axialSpeedGradient(r);
             const double gs = g.dot(s.slope);
             omega.x() += -s.slopeRate.y() + gs*s.slope.y() - w*s.curvature.y();
             omega.y() += s.slopeRate.x() - gs*s.slope.x() + w*s.curvature.x();
@@ -151,19 +178,38 @@ private:
     //- w at offset r from the axis
     double axialSpeed(const Vector& r) const
     {
+        if (turbulent_) return turbulent_->speed(r.norm());
         const double R = radius();
         return uCentre_*(1.0 - r.squaredNorm()/(R*R));
     }
 
-    //- curl u at offset r from the axis
+    //- The cross-section's gradient of w at offset r, grad w = w'(|r|) r/|r|
+    Vector axialSpeedGradient(const Vector& r) const
+    {
+        if (turbulent_)
+        {
+            const double rm = r.norm();
+            return rm > 0.0 ? (turbulent_->gradient(rm)/rm)*r : Vector(Vector::Zero());
+        }
+        const double R = radius();
+        return (-2.0*uCentre_/(R*R))*r;
+    }
+
+    //- curl u at offset r from the axis: (dw/dy, -dw/dx, 0)
     Vector vorticityAt(const Vector& r) const
     {
+        if (turbulent_)
+        {
+            const Vector g = axialSpeedGradient(r);
+            return Vector(g.y(), -g.x(), 0.0);
+        }
         const double c = 2.0*uCentre_/(radius()*radius());
         return Vector(-c*r.y(), c*r.x(), 0.0);
     }
 
     CylinderWall wall_;
     double uCentre_;
+    std::shared_ptr<const TurbulentPipeProfile> turbulent_;
 };
 
 } // namespace riser

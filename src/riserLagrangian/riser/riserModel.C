@@ -8,9 +8,14 @@
 #include "boundBox.H"
 #include "cyclicPolyPatch.H"
 #include "IOdictionary.H"
+#include "IFstream.H"
 #include "unitConversion.H"
 #include "riser/harmonicsMotion.hpp"
 #include "riser/modesMotion.hpp"
+#include "riser/tableMotion.hpp"
+
+#include <fstream>
+#include <sstream>
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
 
@@ -26,6 +31,7 @@ const Foam::scalar Foam::riserModel::maxFrequency = 1000;
 const Foam::scalar Foam::riserModel::maxAcceleration = 1e4;
 const Foam::scalar Foam::riserModel::maxSlope = 0.05;
 const Foam::scalar Foam::riserModel::maxModeNumber = 1000;
+const Foam::scalar Foam::riserModel::minTurbulentRe = 4000;
 
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
@@ -63,6 +69,7 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
     {
         dict_ = IOdictionary(io);
         lab_.reset(new riser::RiserFlow(read(dict_)));
+        noteLaminarCarrier(dict_, *lab_);
         if (dict_.found("frame"))
         {
             frame_ = checkedEntry::choice<simulationFrame>
@@ -84,8 +91,7 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
           ? new riser::RiserFlow(*lab_)
           : new riser::RiserFlow
             (
-                lab_->diameter(), lab_->centreLineSpeed(),
-                riser::SinusoidMotion::atRest()
+                lab_->withMotion(riser::SinusoidMotion::atRest())
             )
         );
         steady_ = flow_->motion().steady();
@@ -344,18 +350,157 @@ riser::MotionPtr readModes(const dictionary& m)
     (
         foot, length, wave, readModeList(m, "x"), readModeList(m, "y")
     );
-    if (motion->maxSlope() > rm::maxSlope)
+    return motion;
+}
+
+
+//- The rows (t z x y) of a motion table file, as riser-dynamics codes
+//  write them: time by time, each time's heights in increasing order
+riser::MotionPtr readTable(const dictionary& m)
+{
+    checkedEntry::allowedKeys(m, {"type", "file"});
+    fileName file(m.get<fileName>("file"));
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        // relative to the case: the folder holding constant/
+        file = m.topDict().name().path().path()/file;
+    }
+    std::ifstream in(file);
+    if (!in)
     {
         FatalIOErrorInFunction(m)
-            << "the modes give the riser a slope of up to "
-            << motion->maxSlope() << " (hypot of the sums of amplitude n pi"
-            << " / length over x and over y); the sheared riser's cross-"
-            << "sections and carrier neglect the slope (errors of order"
-            << " slope^2), which is allowed up to " << rm::maxSlope
-            << ": lower the amplitudes or the mode numbers"
-            << nl << exit(FatalIOError);
+            << "entry 'file': cannot read " << file << nl << exit(FatalIOError);
     }
-    return motion;
+    auto refuse = [&](const label line, const std::string& what)
+    {
+        FatalIOErrorInFunction(m)
+            << "entry 'file' (" << file << ") line " << line << ": "
+            << what.c_str() << nl << exit(FatalIOError);
+    };
+    // the rows (t z x y) and their lines
+    std::vector<FixedList<scalar, 4>> rows;
+    std::vector<label> lines;
+    std::string text;
+    label line = 0;
+    while (std::getline(in, text))
+    {
+        ++line;
+        text = text.substr(0, text.find('#'));
+        for (char& c : text)
+        {
+            if (c == ',' || c == ';' || c == '\t' || c == '\r') c = ' ';
+        }
+        std::istringstream fields(text);
+        std::vector<std::string> words;
+        for (std::string w; fields >> w;) words.push_back(w);
+        if (words.empty()) continue;
+        FixedList<scalar, 4> v;
+        bool numbers = words.size() == 4;
+        for (std::size_t k = 0; numbers && k < 4; ++k)
+        {
+            char* end = nullptr;
+            v[k] = std::strtod(words[k].c_str(), &end);
+            numbers = end != words[k].c_str() && *end == '\0';
+        }
+        if (!numbers && rows.empty() && lines.empty())
+        {
+            lines.push_back(-1);    // one line of column names allowed
+            continue;
+        }
+        if (!numbers)
+        {
+            refuse(line, "a row of four numbers 't z x y' expected, found '" + text + "'");
+        }
+        for (const scalar value : v)
+        {
+            if (!std::isfinite(value))
+            {
+                refuse(line, "a value that is not a finite number");
+            }
+        }
+        rows.push_back(v);
+        lines.push_back(line);
+    }
+    if (!lines.empty() && lines.front() < 0)
+    {
+        lines.erase(lines.begin());
+    }
+    // the heights: those of the first time, increasing
+    std::vector<double> heights, times, x, y;
+    for (std::size_t k = 0; k < rows.size() && rows[k][0] == rows[0][0]; ++k)
+    {
+        if (k > 0 && !(rows[k][1] > heights.back()))
+        {
+            refuse(lines[k], "the heights at a time must increase");
+        }
+        heights.push_back(rows[k][1]);
+    }
+    const std::size_t M = heights.size();
+    if (M < 2)
+    {
+        refuse(line, "at least two heights are needed at each time");
+    }
+    // every time: the same heights, in the same order, times increasing
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        const std::size_t i = k % M;
+        if (i == 0)
+        {
+            if (!times.empty() && !(rows[k][0] > times.back()))
+            {
+                refuse(lines[k], "the times must increase (rows time by time)");
+            }
+            times.push_back(rows[k][0]);
+        }
+        if (rows[k][0] != times.back() || rows[k][1] != heights[i])
+        {
+            refuse
+            (
+                lines[k], "each time must hold the heights of the first time,"
+                " in the same order (a gap or an extra row)"
+            );
+        }
+        x.push_back(rows[k][2]);
+        y.push_back(rows[k][3]);
+    }
+    if (rows.size() % M != 0)
+    {
+        refuse(line, "the last time lacks heights (a gap)");
+    }
+    if (times.size() < 6)
+    {
+        refuse(line, "at least six times are needed");
+    }
+    const scalar h = (times.back() - times.front())/(times.size() - 1);
+    for (std::size_t j = 0; j < times.size(); ++j)
+    {
+        // the times as printed: to 1e-6 of the interval
+        if (mag(times[j] - (times.front() + j*h)) > 1e-6*h)
+        {
+            FatalIOErrorInFunction(m)
+                << "entry 'file' (" << file << "): time " << times[j]
+                << " is off the fixed interval " << h << " s of the table"
+                << " (times at a fixed interval are needed)" << nl
+                << exit(FatalIOError);
+        }
+    }
+    try
+    {
+        const auto table = std::make_shared<const riser::TableMotion>
+        (
+            heights, times.front(), h, label(times.size()), x, y
+        );
+        table->checkSampling();
+        return table;
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalIOErrorInFunction(m)
+            << "entry 'file' (" << file << "): " << e.what() << nl
+            << exit(FatalIOError);
+    }
+    return nullptr;
 }
 
 
@@ -378,14 +523,15 @@ riser::MotionPtr readMotion(const dictionary& dict)
         }
     }
     const dictionary& m = dict.subDict("motion");
-    enum class motionType { sinusoid, harmonics, modes };
+    enum class motionType { sinusoid, harmonics, modes, table };
     const motionType type = checkedEntry::choice<motionType>
     (
         m, "type",
         {
             {"sinusoid", motionType::sinusoid},
             {"harmonics", motionType::harmonics},
-            {"modes", motionType::modes}
+            {"modes", motionType::modes},
+            {"table", motionType::table}
         }
     );
     if (type == motionType::sinusoid)
@@ -403,9 +549,13 @@ riser::MotionPtr readMotion(const dictionary& dict)
             readHarmonicList(m, "x"), readHarmonicList(m, "y")
         );
     }
-    else
+    else if (type == motionType::modes)
     {
         motion = readModes(m);
+    }
+    else
+    {
+        motion = readTable(m);
     }
     if
     (
@@ -414,18 +564,77 @@ riser::MotionPtr readMotion(const dictionary& dict)
     )
     {
         FatalIOErrorInFunction(m)
-            << "the " << motion->type() << " give the wall a speed of up to "
+            << "the " << motion->type() << " motion gives the wall a speed of up to "
             << motion->maxSpeed() << " m/s and an acceleration of up to "
-            << motion->maxAcceleration() << " m/s^2 (hypot of the sums of"
-            << " amplitude omega and amplitude omega^2 over x and over y);"
-            << " a riser's are at most " << rm::maxSpeed << " m/s and "
+            << motion->maxAcceleration() << " m/s^2 (its bounds over every"
+            << " height and time); a riser's are at most " << rm::maxSpeed << " m/s and "
             << rm::maxAcceleration << " m/s^2" << nl << exit(FatalIOError);
+    }
+    if (motion->maxSlope() > rm::maxSlope)
+    {
+        FatalIOErrorInFunction(m)
+            << "the " << motion->type() << " motion gives the riser a slope of"
+            << " up to " << motion->maxSlope() << "; the sheared riser's"
+            << " cross-sections and carrier neglect the slope (errors of"
+            << " order slope^2), which is allowed up to " << rm::maxSlope
+            << ": lower the amplitudes or the mode numbers"
+            << nl << exit(FatalIOError);
     }
     return motion;
 }
 
+//- The kinematic viscosity nu of constant/transportProperties, beside the
+//  riserProperties of dict
+scalar readViscosity(const dictionary& dict)
+{
+    const fileName file(dict.topDict().name().path()/"transportProperties");
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(dict)
+            << "profile turbulent needs the viscosity nu of " << file
+            << ", which cannot be read" << nl << exit(FatalIOError);
+    }
+    const dictionary transport(is);
+    return checkedEntry::dimensionedInRange
+    (
+        transport, "nu", dimViscosity, 0, false, 1, true
+    );
+}
+
 } // End anonymous namespace
 } // End namespace Foam
+
+
+void Foam::riserModel::noteLaminarCarrier
+(
+    const dictionary& dict,
+    const riser::RiserFlow& flow
+)
+{
+    const fileName file(dict.topDict().name().path()/"transportProperties");
+    IFstream is(file);
+    if (flow.turbulentProfile() || !is.good())
+    {
+        return;
+    }
+    const dictionary transport(is);
+    const scalar nu = checkedEntry::dimensionedInRange
+    (
+        transport, "nu", dimViscosity, 0, false, 1, true
+    );
+    // the bulk speed of Poiseuille flow is half its centre-line speed
+    const scalar Re = 0.5*flow.centreLineSpeed()*flow.diameter()/nu;
+    if (Re > 2300)
+    {
+        Info<< "riserProperties: the carrier is laminar Poiseuille flow at the"
+            << " pipe Reynolds number " << Re << " (bulk speed uCentre/2), where"
+            << " a pipe's flow is turbulent (above 2,300), "
+            << (dict.found("profile") ? "as asked (profile laminar)"
+                                      : "the paper's carrier (no profile given)")
+            << "; profile turbulent gives the turbulent mean flow" << endl;
+    }
+}
 
 
 riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
@@ -437,15 +646,63 @@ riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
         dict,
         {
             "D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier",
-            "drive", "motion"
+            "drive", "motion", "profile", "uBulk", "roughness"
         }
     );
     const scalar D =
         dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
-    const scalar uCentre =
-        dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, maxSpeed, true);
-
-    return riser::RiserFlow(D, uCentre, readMotion(dict));
+    const bool turbulent =
+        dict.found("profile")
+     && checkedEntry::choice<bool>
+        (
+            dict, "profile", {{"laminar", false}, {"turbulent", true}}
+        );
+    // each profile's own entries, and none of the other's
+    for (const char* key : {"uCentre", "uBulk", "roughness"})
+    {
+        const bool own = turbulent == (word(key) != "uCentre");
+        if (!own && dict.found(key))
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << key << "' with profile "
+                << (turbulent ? "turbulent" : "laminar") << ": the "
+                << (turbulent
+                  ? "turbulent profile takes the bulk speed uBulk (its centre-line"
+                    " speed follows from it)"
+                  : "laminar (Poiseuille) profile takes its centre-line speed"
+                    " uCentre")
+                << nl << exit(FatalIOError);
+        }
+    }
+    if (!turbulent)
+    {
+        const scalar uCentre =
+            dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, maxSpeed, true);
+        return riser::RiserFlow(D, uCentre, readMotion(dict));
+    }
+    const scalar uBulk =
+        dimensionedInRange(dict, "uBulk", dimVelocity, 0, false, maxSpeed, true);
+    const scalar roughness =
+        dict.found("roughness")
+      ? dimensionedInRange(dict, "roughness", dimLength, 0, true, D/2, false)
+      : 0;
+    const scalar nu = readViscosity(dict);
+    const scalar Re = uBulk*D/nu;
+    if (Re < minTurbulentRe || Re > 1e8)
+    {
+        FatalIOErrorInFunction(dict)
+            << "profile turbulent: the pipe Reynolds number uBulk D/nu = " << Re
+            << " (uBulk " << uBulk << " m/s, D " << D << " m, nu " << nu
+            << " m^2/s) is outside the profile's range [" << minTurbulentRe
+            << ", 1e8]; below, the flow is laminar or transitional: use"
+            << " profile laminar" << nl << exit(FatalIOError);
+    }
+    return riser::RiserFlow
+    (
+        D,
+        std::make_shared<const riser::TurbulentPipeProfile>(D, uBulk, nu, roughness),
+        readMotion(dict)
+    );
 }
 
 

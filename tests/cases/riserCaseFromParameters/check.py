@@ -34,9 +34,29 @@ if not log.rstrip().endswith("End") or not os.path.isdir(os.path.join(case, "0.5
 # the given values, as the case holds them (exact: written from them)
 riser = os.path.join(case, "constant", "riserProperties")
 cloud = os.path.join(case, "constant", "kinematicCloudProperties")
-for name, expected in (("D", D), ("uCentre", 2 * ub), ("A", A), ("f", f)):
+# Re = 0.6 * 0.08 / 1e-6 = 4.8e4: the turbulent carrier at the bulk velocity
+for name, expected in (("D", D), ("uBulk", ub), ("roughness", 0.0), ("A", A), ("f", f)):
     value = ff.read_entry(riser, name)
-    checks.near("riserProperties %s" % name, value, expected, 1e-12)
+    checks.near("riserProperties %s" % name, value, expected, 1e-12, scale=1.0)
+profile = open(riser).read()
+if not re.search(r"^profile\s+turbulent;", profile, re.M) or "uCentre" in profile:
+    print("FAILED: the case at Re 4.8e4 is not given the turbulent profile")
+    checks.failures += 1
+# -laminar keeps Poiseuille's above Re 2,300, and says so; below, laminar anyway
+for name, args, says in (("laminarAsked", ["-laminar"], "above 2,300 as asked by -laminar"),
+                         ("laminarSlow", ["-uBulk", "0.02"], "laminar Poiseuille (Re 1600")):
+    other = os.path.join(work, name)
+    out = subprocess.run([riser_case, other, "-D", repr(D), "-L", repr(L), "-N", "5"]
+                         + (["-uBulk", repr(ub)] if "-uBulk" not in args else []) + args,
+                         stdout=subprocess.PIPE, text=True, check=True).stdout
+    u = ub if "-uBulk" not in args else 0.02
+    text = open(os.path.join(other, "constant", "riserProperties")).read()
+    ok = (says in out and re.search(r"^profile\s+laminar;", text, re.M) is not None
+          and abs(ff.read_entry(os.path.join(other, "constant", "riserProperties"), "uCentre")
+                  - 2 * u) < 1e-12)
+    print("riserCase %s: laminar Poiseuille, uCentre = 2 uBulk, said: %s"
+          % (" ".join(args), "ok" if ok else "FAILED\n" + out))
+    checks.failures += 0 if ok else 1
 drag = subprocess.run(["foamDictionary", "-entry",
                        "subModels/particleForces/wallCorrectedDrag/pipeDiameter", "-value", cloud],
                       stdout=subprocess.PIPE, text=True, check=True).stdout
@@ -88,6 +108,11 @@ for args, named in (
         (["-rho", "-5"], "-rho"),
         (["-Cv", "0.03", "-N", "10"], "-N"),
         (["-Cv", "0.5"], "-Cv"),
+        (["-roughness", "-1e-5"], "-roughness"),
+        (["-roughness", "0.05"], "-roughness"),
+        (["-roughness", "1e-4", "-laminar"], "-roughness"),
+        (["-nu", "0"], "-nu"),
+        (["-uBulk", "0.03"], "-uBulk"),
         (["-N", "100000"], "-N"),
         (["-n", "5"], "-n"),
         (["-periods", "0"], "-periods"),
