@@ -107,16 +107,19 @@ public:
     ForceReport forces(double t, const ParticleState& s, const std::optional<ContactPoint>& c) const
     {
         ForceReport f;
-        const Vector u = riser_.velocity(s.x, t);
+        // the riser's kinematics at the particle's height, once (the same
+        // bits as the carrier's own evaluations at (x, t))
+        const AxisState axis = riser_.motion().state(s.x.z(), t);
+        const Vector u = riser_.velocity(s.x, axis);
         const Vector w = u - s.v;
-        const Vector DuDt = riser_.materialDerivative(s.x, t);
+        const Vector DuDt = riser_.materialDerivative(s.x, axis);
         if (forces_[Force::drag])
         {
             f[Force::drag] = dragForce(forces_.dragLaw, factors_, d_, rhoF_, mu_, w);
         }
         if (forces_[Force::lift])
         {
-            f[Force::lift] = saffmanMeiLiftForce(d_, rhoF_, mu_, w, riser_.vorticity(s.x, t));
+            f[Force::lift] = saffmanMeiLiftForce(d_, rhoF_, mu_, w, riser_.vorticity(s.x, axis));
         }
         if (forces_[Force::addedMass])
         {

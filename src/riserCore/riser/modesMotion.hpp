@@ -105,8 +105,11 @@ public:
         return state(z, t).acceleration;
     }
 
+    //- The state at (z, t); the last one asked is kept (the carrier and
+    //  the wall of a particle ask at one height and time in turn)
     AxisState state(double z, double t) const override
     {
+        if (z == lastZ_ && t == lastT_) return last_;
         AxisState s;
         const Derivatives dx = sum(x_, z, t), dy = sum(y_, z, t);
         s.position = Vector(dx.value, dy.value, 0.0);
@@ -115,6 +118,9 @@ public:
         s.slope = Vector(dx.dz, dy.dz, 0.0);
         s.slopeRate = Vector(dx.dzt, dy.dzt, 0.0);
         s.curvature = Vector(dx.dzz, dy.dzz, 0.0);
+        lastZ_ = z;
+        lastT_ = t;
+        last_ = s;
         return s;
     }
 
@@ -233,6 +239,10 @@ private:
     double foot_, length_;
     Wave wave_;
     std::vector<Mode> x_, y_;
+    //- The last state asked for, and where (a cache: not for use from
+    //  several threads at once)
+    mutable double lastZ_ = NAN, lastT_ = NAN;
+    mutable AxisState last_;
 };
 
 } // namespace riser

@@ -138,8 +138,11 @@ public:
         return state(z, t).acceleration;
     }
 
+    //- The state at (z, t); the last one asked is kept (the carrier and
+    //  the wall of a particle ask at one height and time in turn)
     AxisState state(double z, double t) const override
     {
+        if (z == lastZ_ && t == lastT_) return last_;
         const int M = static_cast<int>(z_.size());
         if (!(z >= z_.front() && z <= z_.back() && t >= t0_ && t <= endTime()))
         {
@@ -155,36 +158,55 @@ public:
         );
         const double dz = z_[i + 1] - z_[i], s = (z - z_[i])/dz;
         const int j = std::min(int((t - t0_)/h_), N_ - 2);
-        const double tau = (t - t0_)/h_ - j;
+        // the quintic's basis in time (per derivative, scaled by h^n to
+        // act on the nodes' value, h velocity and h^2 acceleration), and
+        // the cubic's along z (h00, h10 dz, h01, h11 dz and derivatives)
+        double T[3][6];
+        timeBasis((t - t0_)/h_ - j, T);
+        const double s2 = s*s, s3 = s2*s;
+        const double H[3][4] =
+        {
+            {2*s3 - 3*s2 + 1, (s3 - 2*s2 + s)*dz, -2*s3 + 3*s2, (s3 - s2)*dz},
+            {(6*s2 - 6*s)/dz, 3*s2 - 4*s + 1, (-6*s2 + 6*s)/dz, 3*s2 - 2*s},
+            {(12*s - 6)/(dz*dz), (6*s - 4)/dz, (-12*s + 6)/(dz*dz), (6*s - 2)/dz}
+        };
         AxisState st;
         for (int c = 0; c < 2; ++c)
         {
-            // value and z-slope at heights i, i+1, each with its time
-            // derivatives (0, 1, 2)
+            // the four nodes of the cell: heights i, i+1 at times j, j+1
+            const Node& a0 = nodes_[c][j*M + i];
+            const Node& a1 = nodes_[c][j*M + i + 1];
+            const Node& b0 = nodes_[c][(j + 1)*M + i];
+            const Node& b1 = nodes_[c][(j + 1)*M + i + 1];
+            // value and z-slope at heights i, i+1, time derivative n
+            auto inTime = [&](const double (&a)[3], const double (&b)[3], int n)
+            {
+                const double* w = T[n];
+                return w[0]*a[0] + w[1]*a[1] + w[2]*a[2] + w[3]*b[0] + w[4]*b[1] + w[5]*b[2];
+            };
             double f[2][3], m[2][3];
-            for (int k = 0; k < 2; ++k)
+            for (int n = 0; n < 3; ++n)
             {
-                inTime(nodes_[c], i + k, j, tau, f[k], m[k]);
+                f[0][n] = inTime(a0.f, b0.f, n);
+                f[1][n] = inTime(a1.f, b1.f, n);
+                m[0][n] = inTime(a0.m, b0.m, n);
+                m[1][n] = inTime(a1.m, b1.m, n);
             }
-            // cubic Hermite in z: basis h00, h10 dz, h01, h11 dz and their
-            // z derivatives
-            const double s2 = s*s, s3 = s2*s;
-            const double H[4] = {2*s3 - 3*s2 + 1, (s3 - 2*s2 + s)*dz, -2*s3 + 3*s2, (s3 - s2)*dz};
-            const double Hz[4] =
-                {(6*s2 - 6*s)/dz, 3*s2 - 4*s + 1, (-6*s2 + 6*s)/dz, 3*s2 - 2*s};
-            const double Hzz[4] =
-                {(12*s - 6)/(dz*dz), (6*s - 4)/dz, (-12*s + 6)/(dz*dz), (6*s - 2)/dz};
-            auto combine = [&](const double (&B)[4], int n)
+            auto combine = [&](int dzOrder, int n)
             {
+                const double* B = H[dzOrder];
                 return B[0]*f[0][n] + B[1]*m[0][n] + B[2]*f[1][n] + B[3]*m[1][n];
             };
-            st.position[c] = combine(H, 0);
-            st.velocity[c] = combine(H, 1);
-            st.acceleration[c] = combine(H, 2);
-            st.slope[c] = combine(Hz, 0);
-            st.slopeRate[c] = combine(Hz, 1);
-            st.curvature[c] = combine(Hzz, 0);
+            st.position[c] = combine(0, 0);
+            st.velocity[c] = combine(0, 1);
+            st.acceleration[c] = combine(0, 2);
+            st.slope[c] = combine(1, 0);
+            st.slopeRate[c] = combine(1, 1);
+            st.curvature[c] = combine(2, 0);
         }
+        lastZ_ = z;
+        lastT_ = t;
+        last_ = st;
         return st;
     }
 
@@ -329,16 +351,11 @@ private:
         out[2] = d2/(h_*h_);
     }
 
-    //- Quintic Hermite in time between samples j and j+1 at fraction tau
-    //  of node column i: f and m with their first two time derivatives
-    void inTime(const std::vector<Node>& nodes, int i, int j, double tau, double (&f)[3],
-                double (&m)[3]) const
+    //- The quintic Hermite basis at fraction tau of a time interval, for
+    //  the value and its first two time derivatives (rows), acting on a
+    //  node pair's (p0, v0, a0, p1, v1, a1): the h powers folded in
+    void timeBasis(double tau, double (&T)[3][6]) const
     {
-        const int M = static_cast<int>(z_.size());
-        const Node& a = nodes[j*M + i];
-        const Node& b = nodes[(j + 1)*M + i];
-        // basis of p0, v0 h, a0 h^2, p1, v1 h, a1 h^2 and its first two
-        // derivatives in tau
         const double t = tau, t2 = t*t, t3 = t2*t, t4 = t3*t, t5 = t4*t;
         const double B[3][6] =
         {
@@ -349,14 +366,16 @@ private:
             {-60*t + 180*t2 - 120*t3, -36*t + 96*t2 - 60*t3, 1 - 9*t + 18*t2 - 10*t3,
              60*t - 180*t2 + 120*t3, -24*t + 84*t2 - 60*t3, 3*t - 12*t2 + 10*t3}
         };
+        // d^n/dt^n = (1/h^n) d^n/dtau^n; the velocity and acceleration
+        // weights act on h v and h^2 a
         const double scale[3] = {1, 1/h_, 1/(h_*h_)};
+        const double hPower[6] = {1, h_, h_*h_, 1, h_, h_*h_};
         for (int n = 0; n < 3; ++n)
         {
-            const double* w = B[n];
-            f[n] = scale[n]*(w[0]*a.f[0] + w[1]*h_*a.f[1] + w[2]*h_*h_*a.f[2]
-                           + w[3]*b.f[0] + w[4]*h_*b.f[1] + w[5]*h_*h_*b.f[2]);
-            m[n] = scale[n]*(w[0]*a.m[0] + w[1]*h_*a.m[1] + w[2]*h_*h_*a.m[2]
-                           + w[3]*b.m[0] + w[4]*h_*b.m[1] + w[5]*h_*h_*b.m[2]);
+            for (int k = 0; k < 6; ++k)
+            {
+                T[n][k] = scale[n]*B[n][k]*hPower[k];
+            }
         }
     }
 
@@ -397,6 +416,10 @@ private:
     double timeDiff_ = 0, heightDiff_ = 0, maxSpacing_ = 0;
     double timeError_ = 0, heightError_ = 0;
     double maxOffset_ = 0, maxSpeed_ = 0, maxAcceleration_ = 0, maxSlope_ = 0;
+    //- The last state asked for, and where (a cache: not for use from
+    //  several threads at once)
+    mutable double lastZ_ = NAN, lastT_ = NAN;
+    mutable AxisState last_;
 };
 
 } // namespace riser
