@@ -11,6 +11,11 @@ compare with.
   (Pope, Turbulent Flows, 2000, sec. 7.1).
 - The 1/n power law u = u_max (1 - r/R)^(1/n), whose bulk velocity is
   u_max 2 n^2 / ((n + 1)(2 n + 1)) (n = 7 near Re = 1e5).
+- The library's turbulent carrier (theory guide section 2.7), written
+  afresh from the guide for the tests that check the C++ one:
+  Colebrook's friction factor, Reichardt's law with the log law above, the
+  roughness shift, Coles' wake and the axis cubic, the wake's strength
+  from the bulk speed (turbulent_profile).
 - The turbulence estimates of a RAS model's initial fields: k from a
   turbulence intensity I of the bulk velocity, k = 3/2 (I u_b)^2, and omega
   and epsilon from a length scale l, omega = sqrt(k) / (C_mu^(1/4) l),
@@ -68,3 +73,60 @@ def turbulence_estimates(ub, D, intensity=0.05, length=0.07):
     k = 1.5 * (intensity * ub) ** 2
     l = length * D
     return k, math.sqrt(k) / (C_MU ** 0.25 * l), C_MU ** 0.75 * k ** 1.5 / l
+
+
+def colebrook_friction(Re, relative_roughness=0.0):
+    """Darcy's friction factor of Colebrook-White at Re and k_s/D (bisection
+    on 1/sqrt(f))"""
+    def residual(x):
+        return x + 2 * math.log10(relative_roughness / 3.7 + 2.51 * x / Re)
+    lo, hi = 1.0, 30.0
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        lo, hi = (mid, hi) if residual(mid) < 0 else (lo, mid)
+    return 1 / (0.5 * (lo + hi)) ** 2
+
+
+def turbulent_profile(ub, D, nu, ks=0.0):
+    """w(r) of the library's turbulent carrier (theory guide section 2.7) at
+    bulk speed ub in a pipe of diameter D, viscosity nu, sand-grain
+    roughness ks: a function of r (scalar or array, |r| <= D/2)"""
+    R = D / 2
+    chi = 11.0
+    C = B - math.log(KAPPA) / KAPPA
+    ut = ub * math.sqrt(colebrook_friction(ub * D / nu, ks / D) / 8)
+    Rp = R * ut / nu
+    shift = math.log(1 + 0.3 * ks * ut / nu) / KAPPA
+
+    def inner(yp):
+        e = np.exp(-yp / chi)
+        return (np.log(1 + KAPPA * yp) / KAPPA + C * (1 - e - yp / chi * np.exp(-yp / 3))
+                - shift * (1 - e))
+
+    h = 1e-6 * Rp
+    g = Rp * (inner(Rp + h) - inner(Rp - h)) / (2 * h)
+
+    def base(eta):
+        return inner(eta * Rp) - g / 3 * eta ** 3
+
+    def wake(eta):
+        return 2 / KAPPA * np.sin(0.5 * math.pi * eta) ** 2
+
+    # section means 2 int_0^1 F(eta) (1 - eta) d eta by Simpson's rule,
+    # eta = s^4 graded to the wall
+    s = np.linspace(0, 1, 400001)
+    eta = s ** 4
+    deta = 4 * s ** 3
+
+    def mean(F):
+        v = F(eta) * (1 - eta) * deta
+        return 2 * (s[1] - s[0]) / 3 * (v[0] + v[-1] + 4 * v[1:-1:2].sum() + 2 * v[2:-1:2].sum())
+
+    Pi = (ub / ut - mean(base)) / mean(wake)
+
+    def w(r):
+        e = (R - np.abs(np.asarray(r, dtype=float))) / R
+        value = ut * (base(e) + Pi * wake(e))
+        return float(value) if value.ndim == 0 else value
+    return w
+
