@@ -158,7 +158,7 @@ public:
         Vector omega = vorticityAt(r);
         if (!motion().uniformAlongAxis())
         {
-            const double R = radius(), w = axialSpeed(r);
+            const double w = axialSpeed(r);
             const Vector g = axialSpeedGradient(r);
             const double gs = g.dot(s.slope);
             omega.x() += -s.slopeRate.y() + gs*s.slope.y() - w*s.curvature.y();

@@ -54,7 +54,7 @@ struct Mode
     double phase;       //!< [rad], finite
 };
 
-class ModesMotion final : public RiserMotion
+class ModesMotion final : public StateMotion
 {
 public:
     enum class Wave { standing, travelling };
@@ -98,18 +98,8 @@ public:
 
     const char* type() const override { return "modes"; }
 
-    Vector axis(double z, double t) const override { return state(z, t).position; }
-    Vector velocity(double z, double t) const override { return state(z, t).velocity; }
-    Vector acceleration(double z, double t) const override
+    AxisState computeState(double z, double t) const override
     {
-        return state(z, t).acceleration;
-    }
-
-    //- The state at (z, t); the last one asked is kept (the carrier and
-    //  the wall of a particle ask at one height and time in turn)
-    AxisState state(double z, double t) const override
-    {
-        if (z == lastZ_ && t == lastT_) return last_;
         AxisState s;
         const Derivatives dx = sum(x_, z, t), dy = sum(y_, z, t);
         s.position = Vector(dx.value, dy.value, 0.0);
@@ -118,9 +108,6 @@ public:
         s.slope = Vector(dx.dz, dy.dz, 0.0);
         s.slopeRate = Vector(dx.dzt, dy.dzt, 0.0);
         s.curvature = Vector(dx.dzz, dy.dzz, 0.0);
-        lastZ_ = z;
-        lastT_ = t;
-        last_ = s;
         return s;
     }
 
@@ -239,10 +226,6 @@ private:
     double foot_, length_;
     Wave wave_;
     std::vector<Mode> x_, y_;
-    //- The last state asked for, and where (a cache: not for use from
-    //  several threads at once)
-    mutable double lastZ_ = NAN, lastT_ = NAN;
-    mutable AxisState last_;
 };
 
 } // namespace riser

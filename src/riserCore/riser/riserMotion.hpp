@@ -135,6 +135,38 @@ private:
     }
 };
 
+//- A motion whose kinematics at a height and time are computed together
+//  (riser::ModesMotion, riser::TableMotion): the axis, its velocity and
+//  acceleration are parts of its state, and the last state asked is kept
+//  (the carrier and the wall of a particle ask at one height and time in
+//  turn; a cache: not for use from several threads at once)
+class StateMotion : public RiserMotion
+{
+public:
+    Vector axis(double z, double t) const final { return state(z, t).position; }
+    Vector velocity(double z, double t) const final { return state(z, t).velocity; }
+    Vector acceleration(double z, double t) const final { return state(z, t).acceleration; }
+
+    AxisState state(double z, double t) const final
+    {
+        if (!(z == lastZ_ && t == lastT_))
+        {
+            last_ = computeState(z, t);
+            lastZ_ = z;
+            lastT_ = t;
+        }
+        return last_;
+    }
+
+protected:
+    //- The state at (z, t), every part of it
+    virtual AxisState computeState(double z, double t) const = 0;
+
+private:
+    mutable double lastZ_ = NAN, lastT_ = NAN;
+    mutable AxisState last_;
+};
+
 //- The shared, immutable motion of a flow, its wall and their copies
 using MotionPtr = std::shared_ptr<const RiserMotion>;
 

@@ -41,7 +41,7 @@
 
 namespace riser {
 
-class TableMotion final : public RiserMotion
+class TableMotion final : public StateMotion
 {
 public:
     //- The tolerance of the sampling checks (relative)
@@ -131,18 +131,8 @@ public:
 
     const char* type() const override { return "table"; }
 
-    Vector axis(double z, double t) const override { return state(z, t).position; }
-    Vector velocity(double z, double t) const override { return state(z, t).velocity; }
-    Vector acceleration(double z, double t) const override
+    AxisState computeState(double z, double t) const override
     {
-        return state(z, t).acceleration;
-    }
-
-    //- The state at (z, t); the last one asked is kept (the carrier and
-    //  the wall of a particle ask at one height and time in turn)
-    AxisState state(double z, double t) const override
-    {
-        if (z == lastZ_ && t == lastT_) return last_;
         const int M = static_cast<int>(z_.size());
         if (!(z >= z_.front() && z <= z_.back() && t >= t0_ && t <= endTime()))
         {
@@ -204,9 +194,6 @@ public:
             st.slopeRate[c] = combine(1, 1);
             st.curvature[c] = combine(2, 0);
         }
-        lastZ_ = z;
-        lastT_ = t;
-        last_ = st;
         return st;
     }
 
@@ -416,10 +403,6 @@ private:
     double timeDiff_ = 0, heightDiff_ = 0, maxSpacing_ = 0;
     double timeError_ = 0, heightError_ = 0;
     double maxOffset_ = 0, maxSpeed_ = 0, maxAcceleration_ = 0, maxSlope_ = 0;
-    //- The last state asked for, and where (a cache: not for use from
-    //  several threads at once)
-    mutable double lastZ_ = NAN, lastT_ = NAN;
-    mutable AxisState last_;
 };
 
 } // namespace riser
