@@ -111,7 +111,7 @@ Foam::riserDrive::riserDrive
 
     Info<< "Riser drive: bulk velocity " << target_ << " m/s"
         << (driveDict.found("bulkVelocity") ? "" : " (uCentre/2)")
-        << pulseText()
+        << pulseText().c_str()
         << ", relaxation " << relaxation_ << ", dp/dz = " << dpdz_.value()
         << " Pa/m at the start" << endl;
 
