@@ -56,6 +56,18 @@ simpleCoeffs { n (%d %d %d); delta 0.001; }
     run(["reconstructPar", "-latestTime", "-case", case], os.path.join(case, "log.reconstructPar"))
     return log
 
+def set_motion(case, motion):
+    """The riser motion of case's constant/riserProperties: the dictionary
+    text motion (e.g. "{ type modes; ... }") in place of the entries A, f,
+    phi0 of the sinusoid; the file's path"""
+    riser = os.path.join(case, "constant", "riserProperties")
+    for key in ("A", "f", "phi0"):
+        ff.remove_entry(riser, key)
+    with open(riser, "a") as out:
+        out.write("motion %s\n" % motion)
+    return riser
+
+
 def copy_tutorial(tutorial, case, root=ROOT):
     """A fresh copy of the tutorial (a folder under tutorials/, e.g.
     'riser/oscillatingNoContact') in case: its 0, constant and system,

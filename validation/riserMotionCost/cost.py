@@ -34,11 +34,7 @@ def write_table(case):
 def make(name):
     case = os.path.join(work, name)
     cases.copy_tutorial("riser/oscillatingNoContact", case)
-    riser = os.path.join(case, "constant/riserProperties")
-    for key in ("A", "f", "phi0"):
-        ff.remove_entry(riser, key)
-    with open(riser, "a") as out:
-        out.write("motion %s\n" % MOTIONS[name])
+    riser = cases.set_motion(case, MOTIONS[name])
     ff.set_nested(riser, "frame", "lab")
     # the ore 25 m up the riser (where mode 3 moves: 0.1 |sin(3 pi z/L)|)
     ff.write_dictionary(os.path.join(case, "constant/kinematicCloudPositions"),

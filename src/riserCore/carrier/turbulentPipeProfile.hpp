@@ -65,26 +65,6 @@ inline double colebrookFrictionFactor(double Re, double relativeRoughness)
     return 1.0/(x*x);
 }
 
-//- Prandtl-Karman's friction factor of a smooth pipe, 1/sqrt(f) =
-//  2 log10(Re sqrt(f)) - 0.8 (to 1e-14)
-inline double prandtlKarmanFrictionFactor(double Re)
-{
-    requireInRange("riser::prandtlKarmanFrictionFactor", "Re", Re, 2000.0, Bound::closed, 1e9,
-                   Bound::closed);
-    double x = 7.0;
-    for (int i = 0; i < 100; ++i)
-    {
-        const double next = 2.0*std::log10(Re/x) - 0.8;
-        if (std::abs(next - x) < 1e-14*x)
-        {
-            x = next;
-            break;
-        }
-        x = next;
-    }
-    return 1.0/(x*x);
-}
-
 class TurbulentPipeProfile
 {
 public:
@@ -92,7 +72,6 @@ public:
     //  Flows, 2000, sec. 7.1.4), and Reichardt's: chi, and C, which gives
     //  his law the intercept B
     static constexpr double kappa = 0.41, B = 5.2, chi = 11.0;
-    static double C() { return B - std::log(kappa)/kappa; }
 
     //- D: pipe diameter [m]; uBulk: bulk speed [m/s]; nu: kinematic
     //  viscosity [m^2/s]; roughness: sand-grain height k_s [m], [0, D/2)
@@ -179,7 +158,7 @@ private:
     double innerPlus(double yp) const
     {
         const double e = std::exp(-yp/chi);
-        return std::log(1.0 + kappa*yp)/kappa + C()*(1.0 - e - yp/chi*std::exp(-yp/3.0))
+        return std::log(1.0 + kappa*yp)/kappa + C_*(1.0 - e - yp/chi*std::exp(-yp/3.0))
              - shift_*(1.0 - e);
     }
 
@@ -188,7 +167,7 @@ private:
     {
         const double e = std::exp(-yp/chi), e3 = std::exp(-yp/3.0);
         return 1.0/(1.0 + kappa*yp)
-             + C()*(e/chi - e3/chi + yp/(3.0*chi)*e3)
+             + C_*(e/chi - e3/chi + yp/(3.0*chi)*e3)
              - shift_*e/chi;
     }
 
@@ -232,6 +211,8 @@ private:
     }
 
     double R_, uBulk_, nu_, ks_;
+    //- Reichardt's C, which gives his law the intercept B
+    const double C_ = B - std::log(kappa)/kappa;
     double Re_ = 0, f_ = 0, uTau_ = 0, Rplus_ = 0, shift_ = 0, g_ = 0, Pi_ = 0;
     double uCentre_ = 0;
 };

@@ -383,6 +383,7 @@ riser::MotionPtr readTable(const dictionary& m)
     std::vector<label> lines;
     std::string text;
     label line = 0;
+    bool header = false;
     while (std::getline(in, text))
     {
         ++line;
@@ -403,9 +404,9 @@ riser::MotionPtr readTable(const dictionary& m)
             v[k] = std::strtod(words[k].c_str(), &end);
             numbers = end != words[k].c_str() && *end == '\0';
         }
-        if (!numbers && rows.empty() && lines.empty())
+        if (!numbers && rows.empty() && !header)
         {
-            lines.push_back(-1);    // one line of column names allowed
+            header = true;          // one line of column names allowed
             continue;
         }
         if (!numbers)
@@ -421,10 +422,6 @@ riser::MotionPtr readTable(const dictionary& m)
         }
         rows.push_back(v);
         lines.push_back(line);
-    }
-    if (!lines.empty() && lines.front() < 0)
-    {
-        lines.erase(lines.begin());
     }
     // the heights: those of the first time, increasing
     std::vector<double> heights, times, x, y;
@@ -585,14 +582,21 @@ riser::MotionPtr readMotion(const dictionary& dict)
 
 //- The kinematic viscosity nu of constant/transportProperties, beside the
 //  riserProperties of dict
-scalar readViscosity(const dictionary& dict)
+//- The kinematic viscosity nu of constant/transportProperties, beside the
+//  riserProperties of dict; without that file, -1, or with required
+//  (what needs it) FatalIOError
+scalar readViscosity(const dictionary& dict, const char* required = nullptr)
 {
     const fileName file(dict.topDict().name().path()/"transportProperties");
     IFstream is(file);
     if (!is.good())
     {
+        if (!required)
+        {
+            return -1;
+        }
         FatalIOErrorInFunction(dict)
-            << "profile turbulent needs the viscosity nu of " << file
+            << required << " needs the viscosity nu of " << file
             << ", which cannot be read" << nl << exit(FatalIOError);
     }
     const dictionary transport(is);
@@ -612,17 +616,11 @@ void Foam::riserModel::noteLaminarCarrier
     const riser::RiserFlow& flow
 )
 {
-    const fileName file(dict.topDict().name().path()/"transportProperties");
-    IFstream is(file);
-    if (flow.turbulentProfile() || !is.good())
+    const scalar nu = flow.turbulentProfile() ? -1 : readViscosity(dict);
+    if (nu <= 0)
     {
         return;
     }
-    const dictionary transport(is);
-    const scalar nu = checkedEntry::dimensionedInRange
-    (
-        transport, "nu", dimViscosity, 0, false, 1, true
-    );
     // the bulk speed of Poiseuille flow is half its centre-line speed
     const scalar Re = 0.5*flow.centreLineSpeed()*flow.diameter()/nu;
     if (Re > 2300)
@@ -686,7 +684,7 @@ riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
         dict.found("roughness")
       ? dimensionedInRange(dict, "roughness", dimLength, 0, true, D/2, false)
       : 0;
-    const scalar nu = readViscosity(dict);
+    const scalar nu = readViscosity(dict, "profile turbulent");
     const scalar Re = uBulk*D/nu;
     if (Re < minTurbulentRe || Re > 1e8)
     {
