@@ -158,14 +158,24 @@ public:
         Vector omega = vorticityAt(r);
         if (!motion().uniformAlongAxis())
         {
-            const double w = axialSpeed(r);
-            const Vector g = axialSpeedGradient(r);
-            const double gs = g.dot(s.slope);
-            omega.x() += -s.slopeRate.y() + gs*s.slope.y() - w*s.curvature.y();
-            omega.y() += s.slopeRate.x() - gs*s.slope.x() + w*s.curvature.x();
-            omega.z() += g.x()*s.slope.y() - g.y()*s.slope.x();
+            omega += shearVorticity(r, s);
         }
         return omega;
+    }
+
+    //- The part of curl u that a riser varying along z adds (its slope,
+    //  slope rate and curvature in s) at offset r from the local axis
+    Vector shearVorticity(const Vector& r, const AxisState& s) const
+    {
+        const double w = axialSpeed(r);
+        const Vector g = axialSpeedGradient(r);
+        const double gs = g.dot(s.slope);
+        return Vector
+        (
+            -s.slopeRate.y() + gs*s.slope.y() - w*s.curvature.y(),
+            s.slopeRate.x() - gs*s.slope.x() + w*s.curvature.x(),
+            g.x()*s.slope.y() - g.y()*s.slope.x()
+        );
     }
 
 private:

@@ -73,14 +73,19 @@ Foam::vector Foam::carrierFlow::velocity
         }
         return u;
     }
-    return fromCore
-    (
-        riser_.flow().velocity
-        (
-            toCore(position(p)),
-            riser_.at(position(p).z(), riser_.particleTime(p.stepFraction())).flow
-        )
-    );
+    const point& x = position(p);
+    const scalar t = riser_.particleTime(p.stepFraction());
+    vector u = fromCore(riser_.flow().velocity(toCore(x), riser_.at(x.z(), t).flow));
+    if (riser_.shearedFrame())
+    {
+        // seen from the sheared frame, whose velocity along the particle's
+        // path holds v_z times the riser's slope, the carrier (which
+        // follows the slope at its own axial speed) moves sideways at
+        // (u_z - v_z) times the slope
+        const riser::AxisState& lab = riser_.labState(x.z(), t);
+        u += (u.z() - p.U().z())*vector(lab.slope.x(), lab.slope.y(), 0);
+    }
+    return u;
 }
 
 
@@ -91,14 +96,24 @@ Foam::vector Foam::carrierFlow::vorticity(const ParcelType& p) const
     {
         return interpolate(vorticity_, p);
     }
-    return fromCore
-    (
-        riser_.flow().vorticity
+    const point& x = position(p);
+    const scalar t = riser_.particleTime(p.stepFraction());
+    const riser::AxisState& s = riser_.at(x.z(), t).flow;
+    vector omega = fromCore(riser_.flow().vorticity(toCore(x), s));
+    if (riser_.shearedFrame())
+    {
+        // the vorticity the riser's variation along z adds (the same in
+        // either frame: the sheared frame translates)
+        omega += fromCore
         (
-            toCore(position(p)),
-            riser_.at(position(p).z(), riser_.particleTime(p.stepFraction())).flow
-        )
-    );
+            riser_.flow().shearVorticity
+            (
+                riser::RiserMotion::radialOffset(toCore(x), s),
+                riser_.labState(x.z(), t)
+            )
+        );
+    }
+    return omega;
 }
 
 
@@ -120,13 +135,24 @@ Foam::vector Foam::carrierFlow::materialDerivative
     }
     // Du/Dt of the riser flow is the riser's acceleration at the height:
     // no position of a riser the same at every height (riserModel::height)
-    return fromCore
+    const scalar t = riser_.particleTime(p.stepFraction());
+    vector DuDt = fromCore
     (
-        riser_.flow().materialDerivative
-        (
-            riser_.at(riser_.height(p), riser_.particleTime(p.stepFraction())).flow
-        )
+        riser_.flow().materialDerivative(riser_.at(riser_.height(p), t).flow)
     );
+    if (riser_.shearedFrame())
+    {
+        // relative to the particle's frame: the fluid's path through the
+        // sheared frame at its axial speed u_z, less the particle's at
+        // v_z (the forces add the latter, riserModel::frameAcceleration)
+        const point& x = position(p);
+        const scalar uz =
+            riser_.flow().velocity(toCore(x), riser_.at(x.z(), t).flow).z();
+        DuDt +=
+            riser_.frameAcceleration(x.z(), t, uz)
+          - riser_.frameAcceleration(x.z(), t, p.U().z());
+    }
+    return DuDt;
 }
 
 

@@ -96,19 +96,18 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
         );
         steady_ = flow_->motion().steady();
         uniform_ = lab_->motion().uniformAlongAxis();
-        if (!uniform_)
+        if (!uniform_ && !(frame_ == simulationFrame::riser && exactCarrier_))
         {
-            // the sheared riser's carrier and frame terms (riser::RiserFlow,
-            // doc/theory.md section 2.2) are the mesh-free engine's; the
-            // clouds' frame force, walls and interpolated carriers take
-            // the riser as the same at every height
+            // the sheared riser's frame terms and carrier (doc/theory.md
+            // section 2.6) are those of its own frame with the exact
+            // carrier: the lab frame's mesh moves rigidly, and an
+            // interpolated carrier has no slope terms
             FatalIOErrorInFunction(dict_)
                 << "the riser's motion (type " << lab_->motion().type()
-                << ") varies along its length: the clouds of riserParcelFoam"
-                << " and riserCoupledFoam take the riser as the same at every"
-                << " height; run this riser with the mesh-free engine"
-                << " riserParticle, or give a motion the same at every height"
-                << " (sinusoid, harmonics)" << nl << exit(FatalIOError);
+                << ") varies along its length: a cloud runs it in the riser's"
+                << " frame with the exact carrier only (frame riser; carrier"
+                << " exact), or run it with the mesh-free engine riserParticle"
+                << nl << exit(FatalIOError);
         }
         if (steady_)
         {
@@ -128,6 +127,18 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
         bb.min().z(), bb.max().z() - bb.min().z(), periodic,
         gSum(mesh_.cellVolumes())
     };
+    if (lab_ && !uniform_ && periodic)
+    {
+        // a particle's height in a periodic section is wrapped, and the
+        // riser's motion differs at the section's two ends
+        FatalIOErrorInFunction(dict_)
+            << "the riser's motion (type " << lab_->motion().type()
+            << ") varies along its length, and the mesh's section (z from "
+            << bb.min().z() << " to " << bb.max().z() << " m) is periodic:"
+            << " its ends are not the same riser. Give the mesh open ends"
+            << " (riserMesh -ends wall, placed at the riser's heights)"
+            << nl << exit(FatalIOError);
+    }
 }
 
 

@@ -31,6 +31,23 @@ namespace riserModelDetail
     >
     :
         std::true_type {};
+
+    //- Are the cloud's particles HistoryParcels, which take the sheared
+    //  frame's slope crossing (HistoryParcel::addSlopeCrossing)?
+    template<class CloudType, class = void>
+    struct followsShear : std::false_type {};
+
+    template<class CloudType>
+    struct followsShear
+    <
+        CloudType,
+        std::void_t
+        <
+            decltype(std::declval<typename CloudType::parcelType&>().historyStarted())
+        >
+    >
+    :
+        std::true_type {};
 }
 }
 
@@ -55,7 +72,18 @@ const Foam::riserModel& Foam::riserModel::ofCloud(const CloudType& cloud)
                 << exit(FatalIOError);
         }
     }
-    return New(cloud.mesh());
+    const riserModel& riser = New(cloud.mesh());
+    if (!riserModelDetail::followsShear<CloudType>::value && riser.shearedFrame())
+    {
+        FatalIOErrorInFunction(riser.dict())
+            << "the riser's motion (type " << riser.motion().type()
+            << ") varies along its length, and the cloud " << cloud.name()
+            << " is one of OpenFOAM's own: its particles do not take the"
+            << " sheared frame's slope crossing (doc/theory.md section 2.6)."
+            << " Run this riser with riserParcelFoam or riserParticle"
+            << nl << exit(FatalIOError);
+    }
+    return riser;
 }
 
 

@@ -73,7 +73,7 @@ Foam::forceSuSp Foam::RiserFluidStressForce<CloudType>::calcCoupled
         carrier_.materialDerivative(p, dt)
       + riser_.frameAcceleration
         (
-            riser_.height(p), riser_.particleTime(p.stepFraction())
+            riser_.height(p), riser_.particleTime(p.stepFraction()), p.U().z()
         );
     return forceSuSp
     (
