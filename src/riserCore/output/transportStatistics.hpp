@@ -44,6 +44,15 @@
 // k holds n (r/R)^2 in [k, k+1)).
 // axialProfile.dat: t and Cv_z0 .. Cv_z<m-1>, the solids fraction of m
 // slices of equal length, the lowest first.
+// axialVelocity.dat: t and Urz_z0 .. Urz_z<m-1>, the mean particle
+// velocity along the riser relative to it in each slice (weighted by n_p;
+// nan in an empty slice); over u_cm, the slice's lifting efficiency.
+// axialSlip.dat: t and slipz_z0 .. slipz_z<m-1>, the mean axial slip
+// v_z - u_z against the carrier in each slice (nan in an empty slice).
+// axialContacts.dat: t, wall_z0 .. wall_z<m-1> and pair_z0 .. pair_z<m-1>,
+// the wall and pair contacts completed since the previous sample in each
+// slice, by the slice of the parcel at the end of the step it completed
+// them in (they add up to contacts and pairContacts).
 // impactSpeeds.dat: t and n_0 .. n_<k-1>, the impacts since the previous
 // sample whose speed lies in [i w, (i+1) w) (the last bin: all faster).
 // pairImpactSpeeds.dat: the same for the pair impacts (pairImpacts), by

@@ -20,7 +20,8 @@ void Foam::RiserTransportStatistics<CloudType>::contactTally::add
 (
     const scalar completed,
     const scalar speed,
-    const label bin
+    const label bin,
+    const label slice
 )
 {
     contacts += completed;
@@ -28,6 +29,7 @@ void Foam::RiserTransportStatistics<CloudType>::contactTally::add
     speedSum += speed;
     speedMax = max(speedMax, speed);
     histogram[bin] += 1;
+    slices[slice] += completed;
 }
 
 
@@ -40,6 +42,7 @@ void Foam::RiserTransportStatistics<CloudType>::contactTally::reduceAll()
     reduce(speedMax, maxOp<scalar>());
     reduce(energy, sumOp<scalar>());
     riserCompatibility::listCombineAll(histogram, plusEqOp<scalar>());
+    riserCompatibility::listCombineAll(slices, plusEqOp<scalar>());
 }
 
 
@@ -48,6 +51,7 @@ void Foam::RiserTransportStatistics<CloudType>::contactTally::clear()
 {
     contacts = impacts = speedSum = speedMax = energy = 0;
     histogram = Zero;
+    slices = Zero;
 }
 
 
@@ -106,6 +110,37 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
       + std::to_string(axialBins_) + " slices of equal length, from z = "
       + z0.str() + " m",
         riser::profileColumns("Cv_z", axialBins_)
+    );
+    const std::string slices =
+        std::to_string(axialBins_) + " slices of equal length from z = "
+      + z0.str() + " m";
+    axialVelocityFile_ = open
+    (
+        "axialVelocity",
+        "riserTransportStatistics: mean particle velocity along the riser"
+        " relative to it, Urz, in each of " + slices + " (nan: empty)",
+        riser::profileColumns("Urz_z", axialBins_)
+    );
+    axialSlipFile_ = open
+    (
+        "axialSlip",
+        "riserTransportStatistics: mean axial slip v_z - u_z against the"
+        " carrier in each of " + slices + " (nan: empty)",
+        riser::profileColumns("slipz_z", axialBins_)
+    );
+    std::vector<std::string> contactColumns =
+        riser::profileColumns("wall_z", axialBins_);
+    const std::vector<std::string> pairColumns =
+        riser::profileColumns("pair_z", axialBins_);
+    // after the time column
+    contactColumns.insert(contactColumns.end(), pairColumns.begin() + 1, pairColumns.end());
+    axialContactsFile_ = open
+    (
+        "axialContacts",
+        "riserTransportStatistics: wall and pair contacts completed since"
+        " the previous sample in each of " + slices + ", by the slice of"
+        " the parcel at the end of the step it completed them in",
+        contactColumns
     );
     impactFile_ = open
     (
@@ -171,18 +206,20 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
     // a parcel new to the cloud starts from an empty trace
     const traceState none(Zero);
     HashTable<traceState, labelPair, labelPairHash> states(2*cloud.size());
-    for (const auto& p : cloud)
+    for (auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
         const contactTrace& trace = p.contacts();
         const traceState last = traces_.lookup(key, none);
         const traceState now = stateOf(trace);
+        const label slice = (now[0] > last[0] || now[1] > last[1]) ? sliceOf(p) : 0;
 
         if (now[0] > last[0])
         {
             wall_.add
             (
-                now[0] - last[0], trace.wallImpactSpeed, speedBin(trace.wallImpactSpeed)
+                now[0] - last[0], trace.wallImpactSpeed, speedBin(trace.wallImpactSpeed),
+                slice
             );
         }
         if (now[1] > last[1])
@@ -191,7 +228,7 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
             pair_.add
             (
                 0.5*(now[1] - last[1]), trace.pairImpactSpeed,
-                speedBin(trace.pairImpactSpeed)
+                speedBin(trace.pairImpactSpeed), slice
             );
         }
         wall_.energy += p.nParticle()*(now[2] - last[2]);
@@ -203,20 +240,29 @@ void Foam::RiserTransportStatistics<CloudType>::countContacts()
 
 
 template<class CloudType>
+Foam::label Foam::RiserTransportStatistics<CloudType>::sliceOf
+(
+    typename CloudType::parcelType& p
+) const
+{
+    const endOfStep<typename CloudType::parcelType> done(p);
+    return
+        riser::axialBin
+        (
+            p.position().z(), riser_.section().z0, riser_.section().length,
+            axialBins_
+        );
+}
+
+
+template<class CloudType>
 Foam::scalarList
 Foam::RiserTransportStatistics<CloudType>::axialVolumes()
 {
     scalarList volume(axialBins_, Zero);
     for (auto& p : this->owner())
     {
-        const endOfStep<typename CloudType::parcelType> done(p);
-        const label bin =
-            riser::axialBin
-            (
-                p.position().z(), riser_.section().z0, riser_.section().length,
-                axialBins_
-            );
-        volume[bin] += p.nParticle()*p.volume();
+        volume[sliceOf(p)] += p.nParticle()*p.volume();
     }
     riserCompatibility::listCombineAll(volume, plusEqOp<scalar>());
     return volume;
@@ -254,9 +300,13 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     scalar parcels = 0, particles = 0, volume = 0, axialMomentum = 0;
     vector URel = Zero, slip = Zero;
     scalarList radialVolume(radialBins_, Zero);
+    scalarList sliceParticles(axialBins_, Zero);
+    scalarList sliceUrz(axialBins_, Zero);
+    scalarList sliceSlipz(axialBins_, Zero);
     typename CloudType::parcelType::trackingData td(cloud);
     for (auto& p : cloud)
     {
+        const label slice = sliceOf(p);
         const endOfStep<typename CloudType::parcelType> done(p);
         const scalar n = p.nParticle();
         const riser::Vector x = toCore(p.position());
@@ -269,9 +319,13 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         particles += n;
         volume += n*p.volume();
         radialVolume[riser::radialBin(h, R, radialBins_)] += n*p.volume();
+        const vector slipp = p.U() - carrier_.velocity(p, td.Uc());
         URel += n*Ur;
-        slip += n*(p.U() - carrier_.velocity(p, td.Uc()));
+        slip += n*slipp;
         axialMomentum += n*p.mass()*Ur.z();
+        sliceParticles[slice] += n;
+        sliceUrz[slice] += n*Ur.z();
+        sliceSlipz[slice] += n*slipp.z();
     }
     reduce(parcels, sumOp<scalar>());
     reduce(particles, sumOp<scalar>());
@@ -280,6 +334,9 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     reduce(URel, sumOp<vector>());
     reduce(slip, sumOp<vector>());
     Pstream::listCombineGather(radialVolume, plusEqOp<scalar>());
+    Pstream::listCombineGather(sliceParticles, plusEqOp<scalar>());
+    Pstream::listCombineGather(sliceUrz, plusEqOp<scalar>());
+    Pstream::listCombineGather(sliceSlipz, plusEqOp<scalar>());
     wall_.reduceAll();
     pair_.reduceAll();
 
@@ -327,6 +384,21 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         };
         writeProfile(radialFile_(), radialVolume/(riser_.section().volume/radialBins_));
         writeProfile(axialFile_(), axialVolume/(riser_.section().volume/axialBins_));
+        const auto sliceMeans = [&](const scalarList& sums)
+        {
+            scalarList means(axialBins_);
+            forAll(means, k)
+            {
+                means[k] =
+                    sliceParticles[k] > 0 ? sums[k]/sliceParticles[k] : nan;
+            }
+            return means;
+        };
+        writeProfile(axialVelocityFile_(), sliceMeans(sliceUrz));
+        writeProfile(axialSlipFile_(), sliceMeans(sliceSlipz));
+        scalarList contacts(wall_.slices);
+        contacts.append(pair_.slices);
+        writeProfile(axialContactsFile_(), contacts);
         writeProfile(impactFile_(), wall_.histogram);
         writeProfile(pairImpactFile_(), pair_.histogram);
         transportFile_().flush();
@@ -379,6 +451,8 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
 {
     wall_.histogram.setSize(impactSpeedBins_, Zero);
     pair_.histogram.setSize(impactSpeedBins_, Zero);
+    wall_.slices.setSize(axialBins_, Zero);
+    pair_.slices.setSize(axialBins_, Zero);
     checkedEntry::allowedKeys
     (
         this->coeffDict(),
@@ -410,6 +484,12 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
             if (histogram.size() == impactSpeedBins_)
             {
                 tally.histogram = histogram;
+            }
+            scalarList slices;
+            get("axialContacts", slices);
+            if (slices.size() == axialBins_)
+            {
+                tally.slices = slices;
             }
             get("energy", tally.energy);
         }
@@ -515,6 +595,7 @@ void Foam::RiserTransportStatistics<CloudType>::write()
         set("impactSpeedSum", tally.speedSum);
         set("impactSpeedMax", tally.speedMax);
         set("impactHistogram", tally.histogram);
+        set("axialContacts", tally.slices);
         set("energy", tally.energy);
         if (!Pstream::master())
         {
