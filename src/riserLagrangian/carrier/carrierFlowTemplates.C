@@ -134,12 +134,15 @@ Foam::vector Foam::carrierFlow::materialDerivative
             );
     }
     // Du/Dt of the riser flow is the riser's acceleration at the height:
-    // no position of a riser the same at every height (riserModel::height)
+    // no position of a riser the same at every height (riserModel::height);
+    // in the lab, a riser varying along z adds its shear along the
+    // fluid's path, which depends on the radius
     const scalar t = riser_.particleTime(p.stepFraction());
-    vector DuDt = fromCore
-    (
-        riser_.flow().materialDerivative(riser_.at(riser_.height(p), t).flow)
-    );
+    const riser::AxisState& s = riser_.at(riser_.height(p), t).flow;
+    vector DuDt =
+        riser_.flow().motion().uniformAlongAxis()
+      ? fromCore(riser_.flow().materialDerivative(s))
+      : fromCore(riser_.flow().materialDerivative(toCore(position(p)), s));
     if (riser_.shearedFrame())
     {
         // relative to the particle's frame: the fluid's path through the

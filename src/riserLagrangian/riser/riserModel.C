@@ -96,17 +96,16 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
         );
         steady_ = flow_->motion().steady();
         uniform_ = lab_->motion().uniformAlongAxis();
-        if (!uniform_ && !(frame_ == simulationFrame::riser && exactCarrier_))
+        if (!uniform_ && !exactCarrier_)
         {
-            // the sheared riser's frame terms and carrier (doc/theory.md
-            // section 2.6) are those of its own frame with the exact
-            // carrier: the lab frame's mesh moves rigidly, and an
-            // interpolated carrier has no slope terms
+            // the sheared riser's carrier (doc/theory.md section 2.6) is
+            // the exact one's: an interpolated carrier has no slope terms
             FatalIOErrorInFunction(dict_)
                 << "the riser's motion (type " << lab_->motion().type()
-                << ") varies along its length: a cloud runs it in the riser's"
-                << " frame with the exact carrier only (frame riser; carrier"
-                << " exact), or run it with the mesh-free engine riserParticle"
+                << ") varies along its length: a cloud runs it with the exact"
+                << " carrier only (carrier exact; in the riser's frame, or in"
+                << " the lab on a mesh that deforms with it), or run it with"
+                << " the mesh-free engine riserParticle"
                 << nl << exit(FatalIOError);
         }
         if (steady_)

@@ -76,7 +76,8 @@ bool Foam::solidBodyMotionFunctions::riserOscillation::read
         FatalIOErrorInFunction(riserDict)
             << "riserOscillation moves the mesh rigidly: it needs a riser"
             << " whose motion is the same at every height, not of type "
-            << motion_->type() << exit(FatalIOError);
+            << motion_->type() << ": deform the mesh with the riser instead"
+            << " (motionSolver riserDeformation;)" << exit(FatalIOError);
     }
     return true;
 }

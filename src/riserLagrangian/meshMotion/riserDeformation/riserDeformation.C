@@ -1,0 +1,64 @@
+/*---------------------------------------------------------------------------*\
+  riserFoam: particle transport in vibrating risers, on OpenFOAM
+  License: GPL-3.0-or-later
+\*---------------------------------------------------------------------------*/
+
+#include "riserDeformation.H"
+#include "riserModel.H"
+#include "coreVector.H"
+#include "addToRunTimeSelectionTable.H"
+
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+namespace Foam
+{
+    defineTypeNameAndDebug(riserDeformation, 0);
+    addToRunTimeSelectionTable(motionSolver, riserDeformation, dictionary);
+}
+
+
+// * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
+
+Foam::riserDeformation::riserDeformation
+(
+    const polyMesh& mesh,
+    const IOdictionary& dict
+)
+:
+    points0MotionSolver(mesh, dict, typeName)
+{
+    const IOdictionary riserDict
+    (
+        IOobject
+        (
+            "riserProperties",
+            mesh.time().constant(),
+            mesh.time(),
+            IOobject::MUST_READ,
+            IOobject::NO_WRITE,
+            false
+        )
+    );
+    motion_ = riserModel::read(riserDict).motionPtr();
+}
+
+
+// * * * * * * * * * * * * * * * Member Functions  * * * * * * * * * * * * * //
+
+Foam::tmp<Foam::pointField> Foam::riserDeformation::curPoints() const
+{
+    const scalar t = mesh().time().value();
+    tmp<pointField> tpoints(new pointField(points0_));
+    pointField& points = tpoints.ref();
+    forAll(points, i)
+    {
+        const scalar z = points0_[i].z();
+        const vector d = fromCore(motion_->axis(z, t) - motion_->axis(z, 0));
+        points[i].x() += d.x();
+        points[i].y() += d.y();
+    }
+    return tpoints;
+}
+
+
+// ************************************************************************* //
