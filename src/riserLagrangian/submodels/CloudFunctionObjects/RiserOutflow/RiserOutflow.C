@@ -42,7 +42,8 @@ Foam::label Foam::RiserOutflow<CloudType>::injected() const
 template<class CloudType>
 void Foam::RiserOutflow<CloudType>::noteArrival
 (
-    const typename CloudType::parcelType& p
+    const typename CloudType::parcelType& p,
+    const point&
 )
 {
     if (!p.onBoundaryFace())
