@@ -148,9 +148,9 @@ Foam::vector Foam::carrierFlow::materialDerivative
         // relative to the particle's frame: the fluid's path through the
         // sheared frame at its axial speed u_z, less the particle's at
         // v_z (the forces add the latter, riserModel::frameAcceleration)
+        // (a sheared riser varies along z: s is the state at x_z)
         const point& x = position(p);
-        const scalar uz =
-            riser_.flow().velocity(toCore(x), riser_.at(x.z(), t).flow).z();
+        const scalar uz = riser_.flow().velocity(toCore(x), s).z();
         DuDt +=
             riser_.frameAcceleration(x.z(), t, uz)
           - riser_.frameAcceleration(x.z(), t, p.U().z());
