@@ -13,6 +13,14 @@
 
 #include <limits>
 
+// * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
+
+template<class CloudType>
+const Foam::FixedList<Foam::word, 4>
+Foam::RiserTransportStatistics<CloudType>::exchangeNames_
+({"in", "added", "out", "removed"});
+
+
 // * * * * * * * * * * * * * * Private Member Functions  * * * * * * * * * * //
 
 template<class CloudType>
@@ -69,6 +77,18 @@ Foam::word Foam::RiserTransportStatistics<CloudType>::propertyName
     std::string capitalised(name);
     capitalised[0] = char(toupper(capitalised[0]));
     return word("pair" + capitalised);
+}
+
+
+template<class CloudType>
+Foam::word Foam::RiserTransportStatistics<CloudType>::exchangeProperty
+(
+    const label k
+)
+{
+    std::string name(exchangeNames_[k]);
+    name[0] = char(toupper(name[0]));
+    return word("axial" + name);
 }
 
 
@@ -150,6 +170,23 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
         " all faster)",
         riser::profileColumns("n_", impactSpeedBins_)
     );
+    std::vector<std::string> balanceColumns = riser::profileColumns("ores_z", axialBins_);
+    for (const word& name : exchangeNames_)
+    {
+        const std::vector<std::string> block =
+            riser::profileColumns(name + "_z", axialBins_);
+        balanceColumns.insert(balanceColumns.end(), block.begin() + 1, block.end());
+    }
+    axialBalanceFile_ = open
+    (
+        "axialBalance",
+        "riserTransportStatistics: ores (n_p) in each of " + slices + " at the"
+        " sample; since the previous sample, come from another slice (in),"
+        " new to the cloud (added), gone to another slice (out), gone from"
+        " the cloud (removed): ores = previous ores + in + added - out -"
+        " removed",
+        balanceColumns
+    );
     pairImpactFile_ = open
     (
         "pairImpactSpeeds",
@@ -162,14 +199,20 @@ void Foam::RiserTransportStatistics<CloudType>::openFiles()
 
 
 template<class CloudType>
-typename Foam::RiserTransportStatistics<CloudType>::traceState
-Foam::RiserTransportStatistics<CloudType>::stateOf(const contactTrace& trace)
+typename Foam::RiserTransportStatistics<CloudType>::parcelState
+Foam::RiserTransportStatistics<CloudType>::stateOf
+(
+    typename CloudType::parcelType& p
+) const
 {
-    traceState s;
+    const contactTrace& trace = p.contacts();
+    parcelState s;
     s[0] = trace.wallContacts;
     s[1] = trace.pairContacts;
     s[2] = trace.wallEnergy;
     s[3] = trace.pairEnergy;
+    s[4] = sliceOf(p);
+    s[5] = p.nParticle();
     return s;
 }
 
@@ -189,53 +232,94 @@ Foam::label Foam::RiserTransportStatistics<CloudType>::speedBin
 
 
 template<class CloudType>
-void Foam::RiserTransportStatistics<CloudType>::countContacts()
+Foam::scalarList Foam::RiserTransportStatistics<CloudType>::followParcels()
 {
     CloudType& cloud = this->owner();
     labelPairList missing;
     for (const auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
-        if (!traces_.found(key))
+        if (!parcels_.found(key))
         {
             missing.append(key);
         }
     }
-    claimParticleStates(traces_, missing);
+    claimParticleStates(parcels_, missing);
 
-    // a parcel new to the cloud starts from an empty trace
-    const traceState none(Zero);
-    HashTable<traceState, labelPair, labelPairHash> states(2*cloud.size());
+    scalarList& entered = exchange_[0];
+    scalarList& added = exchange_[1];
+    scalarList& left = exchange_[2];
+    scalarList& removed = exchange_[3];
+    scalarList volume(axialBins_, Zero);
+    HashTable<parcelState, labelPair, labelPairHash> states(2*cloud.size());
     for (auto& p : cloud)
     {
         const labelPair key(p.origProc(), p.origId());
-        const contactTrace& trace = p.contacts();
-        const traceState last = traces_.lookup(key, none);
-        const traceState now = stateOf(trace);
-        const label slice = (now[0] > last[0] || now[1] > last[1]) ? sliceOf(p) : 0;
-
-        if (now[0] > last[0])
-        {
-            wall_.add
-            (
-                now[0] - last[0], trace.wallImpactSpeed, speedBin(trace.wallImpactSpeed),
-                slice
-            );
-        }
-        if (now[1] > last[1])
-        {
-            // each contact is completed by both its parcels
-            pair_.add
-            (
-                0.5*(now[1] - last[1]), trace.pairImpactSpeed,
-                speedBin(trace.pairImpactSpeed), slice
-            );
-        }
-        wall_.energy += p.nParticle()*(now[2] - last[2]);
-        pair_.energy += p.nParticle()*(now[3] - last[3]);
+        const parcelState now = stateOf(p);
+        const label slice = label(now[4]);
+        const scalar n = p.nParticle();
+        volume[slice] += n*p.volume();
         states.insert(key, now);
+
+        const auto found = parcels_.cfind(key);
+        if (!found.found())
+        {
+            // new to the cloud: an empty trace, added in its slice
+            added[slice] += n;
+            countContacts(p, parcelState(Zero), now, slice);
+            continue;
+        }
+        const parcelState& last = found.val();
+        if (label(last[4]) != slice)
+        {
+            left[label(last[4])] += n;
+            entered[slice] += n;
+        }
+        countContacts(p, last, now, slice);
     }
-    traces_.transfer(states);
+    // the parcels of the last step no processor holds now left the cloud
+    forAllConstIters(parcels_, iter)
+    {
+        if (!states.found(iter.key()))
+        {
+            removed[label(iter.val()[4])] += iter.val()[5];
+        }
+    }
+    parcels_.transfer(states);
+    riserCompatibility::listCombineAll(volume, plusEqOp<scalar>());
+    return volume;
+}
+
+
+template<class CloudType>
+void Foam::RiserTransportStatistics<CloudType>::countContacts
+(
+    const typename CloudType::parcelType& p,
+    const parcelState& last,
+    const parcelState& now,
+    const label slice
+)
+{
+    const contactTrace& trace = p.contacts();
+    if (now[0] > last[0])
+    {
+        wall_.add
+        (
+            now[0] - last[0], trace.wallImpactSpeed, speedBin(trace.wallImpactSpeed),
+            slice
+        );
+    }
+    if (now[1] > last[1])
+    {
+        // each contact is completed by both its parcels
+        pair_.add
+        (
+            0.5*(now[1] - last[1]), trace.pairImpactSpeed,
+            speedBin(trace.pairImpactSpeed), slice
+        );
+    }
+    wall_.energy += p.nParticle()*(now[2] - last[2]);
+    pair_.energy += p.nParticle()*(now[3] - last[3]);
 }
 
 
@@ -252,20 +336,6 @@ Foam::label Foam::RiserTransportStatistics<CloudType>::sliceOf
             p.position().z(), riser_.section().z0, riser_.section().length,
             axialBins_
         );
-}
-
-
-template<class CloudType>
-Foam::scalarList
-Foam::RiserTransportStatistics<CloudType>::axialVolumes()
-{
-    scalarList volume(axialBins_, Zero);
-    for (auto& p : this->owner())
-    {
-        volume[sliceOf(p)] += p.nParticle()*p.volume();
-    }
-    riserCompatibility::listCombineAll(volume, plusEqOp<scalar>());
-    return volume;
 }
 
 
@@ -339,6 +409,10 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     Pstream::listCombineGather(sliceSlipz, plusEqOp<scalar>());
     wall_.reduceAll();
     pair_.reduceAll();
+    for (scalarList& list : exchange_)
+    {
+        riserCompatibility::listCombineAll(list, plusEqOp<scalar>());
+    }
 
     if (Pstream::master())
     {
@@ -399,6 +473,12 @@ void Foam::RiserTransportStatistics<CloudType>::sample
         scalarList contacts(wall_.slices);
         contacts.append(pair_.slices);
         writeProfile(axialContactsFile_(), contacts);
+        scalarList balance(sliceParticles);
+        for (const scalarList& list : exchange_)
+        {
+            balance.append(list);
+        }
+        writeProfile(axialBalanceFile_(), balance);
         writeProfile(impactFile_(), wall_.histogram);
         writeProfile(pairImpactFile_(), pair_.histogram);
         transportFile_().flush();
@@ -407,6 +487,10 @@ void Foam::RiserTransportStatistics<CloudType>::sample
     lastSample_ = t;
     wall_.clear();
     pair_.clear();
+    for (scalarList& list : exchange_)
+    {
+        list = Zero;
+    }
 }
 
 
@@ -453,6 +537,10 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     pair_.histogram.setSize(impactSpeedBins_, Zero);
     wall_.slices.setSize(axialBins_, Zero);
     pair_.slices.setSize(axialBins_, Zero);
+    for (scalarList& list : exchange_)
+    {
+        list.setSize(axialBins_, Zero);
+    }
     checkedEntry::allowedKeys
     (
         this->coeffDict(),
@@ -493,6 +581,15 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
             }
             get("energy", tally.energy);
         }
+        forAll(exchange_, k)
+        {
+            scalarList slices;
+            this->getModelProperty(exchangeProperty(k), slices);
+            if (slices.size() == axialBins_)
+            {
+                exchange_[k] = slices;
+            }
+        }
 
         // opened now: a restart after which no sample is taken must not
         // keep the rows after its start
@@ -516,11 +613,12 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
     blockageFraction_(s.blockageFraction_),
     impactSpeedBins_(s.impactSpeedBins_),
     impactSpeedBinWidth_(s.impactSpeedBinWidth_),
-    traces_(s.traces_),
+    parcels_(s.parcels_),
     started_(s.started_),
     lastSample_(s.lastSample_),
     wall_(s.wall_),
     pair_(s.pair_),
+    exchange_(s.exchange_),
     blockedTime_(s.blockedTime_)
 {}
 
@@ -539,10 +637,11 @@ void Foam::RiserTransportStatistics<CloudType>::preEvolve
         return;
     }
     // the contacts completed (and the energy dissipated) before the start,
-    // read with the parcels, are not this run's
-    for (const auto& p : this->owner())
+    // read with the parcels, are not this run's; the parcels read are in
+    // their slices, not added
+    for (auto& p : this->owner())
     {
-        traces_.set(labelPair(p.origProc(), p.origId()), stateOf(p.contacts()));
+        parcels_.set(labelPair(p.origProc(), p.origId()), stateOf(p));
     }
     started_ = true;
 }
@@ -554,9 +653,7 @@ void Foam::RiserTransportStatistics<CloudType>::postEvolve
     RISER_EVOLVE_HOOK_PARAMETER(typename CloudType::parcelType::trackingData)
 )
 {
-    countContacts();
-
-    const scalarList volume = axialVolumes();
+    const scalarList volume = followParcels();
     const scalar sliceVolume = riser_.section().volume/axialBins_;
     label blockedBins = 0;
     for (const scalar V : volume)
@@ -600,6 +697,15 @@ void Foam::RiserTransportStatistics<CloudType>::write()
         if (!Pstream::master())
         {
             tally.clear();
+        }
+    }
+    forAll(exchange_, k)
+    {
+        riserCompatibility::listCombineAll(exchange_[k], plusEqOp<scalar>());
+        this->setModelProperty(exchangeProperty(k), exchange_[k]);
+        if (!Pstream::master())
+        {
+            exchange_[k] = Zero;
         }
     }
 }
