@@ -14,11 +14,11 @@ riser, riserOscillation; the ore released with the riser's velocity added).
 The two frames are the same physics, so the difference of the ore's lift
 after five periods is the discretisation's. Scenes: 3 Hz and 10 Hz with the
 flagship's release 0.2 D off the axis in x and y, and 10 Hz released on
-the axis. At 10 Hz the off-axis ore is flung to within some 20 um of the
-wall a period after its release (the riser's 39 m/s^2): a graze through the
-wall-corrected drag's steep gap dependence, which no step of the flow
-resolves the same way; the ore released on the axis stays 14 mm off the
-wall. Written to results/convergence.dat (f, release, dt, the two lifts,
+the axis. At 10 Hz the riser's 39 m/s^2 flings the off-axis ore against
+the wall within a period: without a contact model it runs into it until
+the stock rebound turns it at the wall's face (one-way, with the exact
+carrier, it grazes it), an impact no step of the flow resolves the same
+way; the ore released on the axis stays 14 mm off the wall. Written to results/convergence.dat (f, release, dt, the two lifts,
 their difference over the riser frame's lift, the ore's nearest approach
 to the wall over both frames).
 
@@ -30,7 +30,7 @@ tolerance 1e-11): the largest difference of the lift over the run, for
 both releases. Written to results/oneWay.dat.
 
 usage: frames.py <work folder> [twoWay] [oneWay]    (default both)
-One solver run at a time (about 40 minutes for the two-way runs).
+One solver run at a time (about 45 minutes for the two-way runs).
 """
 import math
 import os
