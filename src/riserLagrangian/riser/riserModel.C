@@ -364,11 +364,25 @@ riser::MotionPtr readModes(const dictionary& m)
 }
 
 
-//- The rows (t z x y) of a motion table file, as riser-dynamics codes
-//  write them: time by time, each time's heights in increasing order
-riser::MotionPtr readTable(const dictionary& m)
+//- A motion table's rows (t z x y), and where each stands in its source
+struct tableRows
 {
-    checkedEntry::allowedKeys(m, {"type", "file"});
+    //- The source as refusals name it: "entry 'file' (<path>)" or
+    //  "entry 'rows'"
+    std::string source;
+    std::vector<FixedList<scalar, 4>> rows;
+    //- Each row's place: "line N" of the file, or "row N" of the list
+    std::vector<std::string> where;
+    //- The place after the last row (for what the table lacks)
+    std::string end;
+};
+
+
+//- The rows of a motion table file, as riser-dynamics codes write them:
+//  four numbers a line, commas, semicolons, tabs or blanks between them,
+//  '#' comments, one first line of column names
+tableRows readTableFile(const dictionary& m)
+{
     fileName file(m.get<fileName>("file"));
     file.expand();
     if (!file.isAbsolute())
@@ -382,15 +396,8 @@ riser::MotionPtr readTable(const dictionary& m)
         FatalIOErrorInFunction(m)
             << "entry 'file': cannot read " << file << nl << exit(FatalIOError);
     }
-    auto refuse = [&](const label line, const std::string& what)
-    {
-        FatalIOErrorInFunction(m)
-            << "entry 'file' (" << file << ") line " << line << ": "
-            << what.c_str() << nl << exit(FatalIOError);
-    };
-    // the rows (t z x y) and their lines
-    std::vector<FixedList<scalar, 4>> rows;
-    std::vector<label> lines;
+    tableRows table;
+    table.source = "entry 'file' (\"" + file + "\")";
     std::string text;
     label line = 0;
     bool header = false;
@@ -414,24 +421,73 @@ riser::MotionPtr readTable(const dictionary& m)
             v[k] = std::strtod(words[k].c_str(), &end);
             numbers = end != words[k].c_str() && *end == '\0';
         }
-        if (!numbers && rows.empty() && !header)
+        if (!numbers && table.rows.empty() && !header)
         {
             header = true;          // one line of column names allowed
             continue;
         }
         if (!numbers)
         {
-            refuse(line, "a row of four numbers 't z x y' expected, found '" + text + "'");
+            FatalIOErrorInFunction(m)
+                << table.source.c_str() << " line " << line << ": a row of four"
+                << " numbers 't z x y' expected, found '" << text.c_str() << "'"
+                << nl << exit(FatalIOError);
         }
-        for (const scalar value : v)
+        table.rows.push_back(v);
+        table.where.push_back("line " + std::to_string(line));
+    }
+    table.end = "line " + std::to_string(line);
+    return table;
+}
+
+
+//- The rows of a motion table given as an OpenFOAM list in the dictionary
+//  (rows ((t z x y) ...); written there or #include'd)
+tableRows readTableList(const dictionary& m)
+{
+    tableRows table;
+    table.source = "entry 'rows'";
+    for (const FixedList<scalar, 4>& row : m.get<List<FixedList<scalar, 4>>>("rows"))
+    {
+        table.rows.push_back(row);
+        table.where.push_back("row " + std::to_string(table.rows.size()));
+    }
+    table.end = "row " + std::to_string(table.rows.size());
+    return table;
+}
+
+
+//- A motion table (rows t z x y, from a file or a list): time by time,
+//  each time's heights in increasing order, the same at every time, the
+//  times at a fixed interval; checked, then its sampling
+riser::MotionPtr readTable(const dictionary& m)
+{
+    checkedEntry::allowedKeys(m, {"type", "file", "rows"});
+    if (m.found("file") == m.found("rows"))
+    {
+        FatalIOErrorInFunction(m)
+            << "a motion of type table takes its rows (t z x y) from one of"
+            << " the entries 'file' (a CSV file) and 'rows' (an OpenFOAM"
+            << " list), " << (m.found("file") ? "not both" : "and has neither")
+            << nl << exit(FatalIOError);
+    }
+    const tableRows table = m.found("file") ? readTableFile(m) : readTableList(m);
+    const std::vector<FixedList<scalar, 4>>& rows = table.rows;
+    auto refuse = [&](const std::string& where, const std::string& what)
+    {
+        FatalIOErrorInFunction(m)
+            << table.source.c_str() << " " << where.c_str() << ": "
+            << what.c_str() << nl << exit(FatalIOError);
+    };
+    for (std::size_t k = 0; k < rows.size(); ++k)
+    {
+        for (const scalar value : rows[k])
         {
             if (!std::isfinite(value))
             {
-                refuse(line, "a value that is not a finite number");
+                refuse(table.where[k], "a value that is not a finite number");
             }
         }
-        rows.push_back(v);
-        lines.push_back(line);
     }
     // the heights: those of the first time, increasing
     std::vector<double> heights, times, x, y;
@@ -439,14 +495,14 @@ riser::MotionPtr readTable(const dictionary& m)
     {
         if (k > 0 && !(rows[k][1] > heights.back()))
         {
-            refuse(lines[k], "the heights at a time must increase");
+            refuse(table.where[k], "the heights at a time must increase");
         }
         heights.push_back(rows[k][1]);
     }
     const std::size_t M = heights.size();
     if (M < 2)
     {
-        refuse(line, "at least two heights are needed at each time");
+        refuse(table.end, "at least two heights are needed at each time");
     }
     // every time: the same heights, in the same order, times increasing
     for (std::size_t k = 0; k < rows.size(); ++k)
@@ -456,7 +512,7 @@ riser::MotionPtr readTable(const dictionary& m)
         {
             if (!times.empty() && !(rows[k][0] > times.back()))
             {
-                refuse(lines[k], "the times must increase (rows time by time)");
+                refuse(table.where[k], "the times must increase (rows time by time)");
             }
             times.push_back(rows[k][0]);
         }
@@ -464,8 +520,8 @@ riser::MotionPtr readTable(const dictionary& m)
         {
             refuse
             (
-                lines[k], "each time must hold the heights of the first time,"
-                " in the same order (a gap or an extra row)"
+                table.where[k], "each time must hold the heights of the first"
+                " time, in the same order (a gap or an extra row)"
             );
         }
         x.push_back(rows[k][2]);
@@ -473,11 +529,11 @@ riser::MotionPtr readTable(const dictionary& m)
     }
     if (rows.size() % M != 0)
     {
-        refuse(line, "the last time lacks heights (a gap)");
+        refuse(table.end, "the last time lacks heights (a gap)");
     }
     if (times.size() < 6)
     {
-        refuse(line, "at least six times are needed");
+        refuse(table.end, "at least six times are needed");
     }
     const scalar h = (times.back() - times.front())/(times.size() - 1);
     for (std::size_t j = 0; j < times.size(); ++j)
@@ -486,7 +542,7 @@ riser::MotionPtr readTable(const dictionary& m)
         if (mag(times[j] - (times.front() + j*h)) > 1e-6*h)
         {
             FatalIOErrorInFunction(m)
-                << "entry 'file' (" << file << "): time " << times[j]
+                << table.source.c_str() << ": time " << times[j]
                 << " is off the fixed interval " << h << " s of the table"
                 << " (times at a fixed interval are needed)" << nl
                 << exit(FatalIOError);
@@ -494,17 +550,17 @@ riser::MotionPtr readTable(const dictionary& m)
     }
     try
     {
-        const auto table = std::make_shared<const riser::TableMotion>
+        const auto motion = std::make_shared<const riser::TableMotion>
         (
             heights, times.front(), h, label(times.size()), x, y
         );
-        table->checkSampling();
-        return table;
+        motion->checkSampling();
+        return motion;
     }
     catch (const std::invalid_argument& e)
     {
         FatalIOErrorInFunction(m)
-            << "entry 'file' (" << file << "): " << e.what() << nl
+            << table.source.c_str() << ": " << e.what() << nl
             << exit(FatalIOError);
     }
     return nullptr;
