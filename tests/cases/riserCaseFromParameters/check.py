@@ -127,6 +127,88 @@ for args, named in (
     if not ok:
         print(bad.stdout)
     checks.failures += not ok
+# a riser that varies along its length: an open section fed at its foot
+def run_open(name, args):
+    """make and run an open-section case; its folder and solver log"""
+    folder = os.path.join(work, name)
+    made = subprocess.run([riser_case, folder] + args, stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True)
+    print(made.stdout.strip())
+    done = subprocess.run([os.path.join(folder, "Allrun")], stdout=subprocess.PIPE,
+                          stderr=subprocess.STDOUT, text=True)
+    if made.returncode != 0 or done.returncode != 0:
+        print("FAILED: riserCase %s (or its Allrun)\n%s" % (" ".join(args), done.stdout[-2000:]))
+        checks.failures += 1
+        return folder, ""
+    return folder, open(os.path.join(folder, "log.riserParcelFoam")).read()
+
+
+def mesh_bottom(folder):
+    return min(p[2] for p in ff.read_vectors(os.path.join(folder, "constant/polyMesh/points")))
+
+
+def added(log):
+    found = re.findall(r"- parcels added\s+= (\d+)", log)
+    return int(found[-1]) if found else -1
+
+
+# mode 3 of a 100 m riser, 0.2 m at 0.5 Hz; the 2 m section centred on the
+# first antinode (z = 100/6 m) by default; 10 mm ores of 2000 kg/m^3 fed at
+# C_v = 0.01 at the bulk velocity 1 m/s: 0.01 * 2000 * pi 0.1^2/4 * 1 =
+# 0.1571 kg/s, 150 ores a second, 30 in 0.2 s (whole ores: within 1)
+mode, ok_args = os.path.join(work, "modes"), ["-motion", "modes", "-mode", "3", "-riserLength", "100",
+                                              "-A", "0.2", "-f", "0.5", "-L", "2", "-n", "4",
+                                              "-uBulk", "1", "-Cv", "0.01", "-endTime", "0.2"]
+folder, log = run_open("modes", ok_args)
+if log:
+    riser = os.path.join(folder, "constant", "riserProperties")
+    text = open(riser).read()
+    checks.near("modes: the section's bottom (the first antinode - L/2)", mesh_bottom(folder),
+                100 / 6 - 1, 1e-6, scale=1.0)
+    expected = 0.01 * 2000 * math.pi * 0.1 ** 2 / 4 * 1.0 * 0.2 / (2000 * math.pi / 6 * 0.01 ** 3)
+    checks.near("modes: ores fed in 0.2 s", added(log), expected, 1.0, scale=1.0)
+    ok = (re.search(r"type\s+modes;", text) and re.search(r"x\s+\(\s*\(\s*3 0.2 0.5 0\s*\)\s*\)", text)
+          and log.rstrip().endswith("End") and os.path.getsize(os.path.join(folder, "riser_along.png")) > 0)
+    print("modes: the motion written, the run ended, the chart drawn: %s" % ("ok" if ok else "FAILED"))
+    checks.failures += not ok
+# the same mode as a table, sampled every 0.05 s and 0.5 m, the section at z = 15 m
+table = os.path.join(work, "mode3.csv")
+with open(table, "w") as out:
+    out.write("t z x y\n")
+    for j in range(9):
+        for i in range(81):
+            out.write("%.10g %.10g %.17g 0\n" % (0.05 * j, 0.5 * i,
+                      0.2 * math.sin(3 * math.pi * 0.5 * i / 100) * math.sin(math.pi * 0.05 * j)))
+folder, log = run_open("table", ["-motion", "table", "-table", table, "-z0", "15", "-L", "2",
+                                 "-n", "4", "-uBulk", "1", "-Cv", "0.01", "-endTime", "0.1"])
+if log:
+    ok = (os.path.isfile(os.path.join(folder, "constant", "riserMotion.csv"))
+          and abs(mesh_bottom(folder) - 15) < 1e-9 and added(log) > 0 and log.rstrip().endswith("End"))
+    print("table: the table copied, the section at z = 15 m, %d ores fed, the run ended: %s"
+          % (added(log), "ok" if ok else "FAILED"))
+    checks.failures += not ok
+for args, named in (
+        (["-mode", "3"], "-mode"),
+        (["-motion", "modes"], "-riserLength"),
+        (["-motion", "modes", "-riserLength", "100", "-z0", "99.5"], "-z0"),
+        (["-motion", "modes", "-riserLength", "100", "-N", "10"], "-N"),
+        (["-motion", "modes", "-riserLength", "100", "-A", "2", "-mode", "3"], "-A"),
+        (["-motion", "modes", "-riserLength", "100", "-mode", "0"], "-mode"),
+        (["-motion", "modes", "-riserLength", "100", "-table", table], "-table"),
+        (["-motion", "table", "-z0", "15", "-endTime", "1"], "-table"),
+        (["-motion", "table", "-table", table, "-endTime", "1"], "-z0"),
+        (["-motion", "table", "-table", table, "-z0", "15"], "-endTime"),
+        (["-motion", "table", "-table", os.path.join(work, "none.csv"), "-z0", "15", "-endTime", "1"], "-table"),
+        (["-feed", "0.5"], "-feed"),
+        (["-endTime", "1", "-periods", "2"], "-endTime"),
+        (["-motion", "modes", "-riserLength", "100", "-feed", "-1"], "-feed")):
+    bad = subprocess.run([riser_case, os.path.join(work, "bad")] + args,
+                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    ok = bad.returncode != 0 and named in bad.stdout and not os.path.exists(os.path.join(work, "bad"))
+    print("riserCase %-40s stops naming %-9s: %s" % (" ".join(args), named, "ok" if ok else "FAILED"))
+    if not ok:
+        print(bad.stdout)
+    checks.failures += not ok
 existing = subprocess.run([riser_case, case], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 ok = existing.returncode != 0 and "exists" in existing.stdout
 print("riserCase into an existing folder stops: %s" % ("ok" if ok else "FAILED"))

@@ -1,5 +1,6 @@
 #!/usr/bin/python3
-"""Charts of the ores along the swaying riser section of this tutorial.
+"""Charts of the ores along the section of a swaying riser (this tutorial,
+or a case bin/riserCase made with -motion modes or table).
 
 usage: plotAlongRiser.py <case folder> <output.png> [averaging start [s]]
 
@@ -7,11 +8,12 @@ From riserTransportStatistics' slices (the samples from the averaging
 start on, default half the run): the solids fraction, the ores' mean
 velocity relative to the riser and lifting efficiency, and the wall and
 pair contacts per second in each slice, against height, beside the local
-amplitude of the riser's sway; and from riserOutflow the transit times of
-the ores that left at the top."""
+amplitude of the riser's sway (of a mode); and from riserOutflow the
+transit times of the ores that left at the top."""
 import math
 import os
 import re
+import subprocess
 import sys
 import warnings
 
@@ -19,6 +21,41 @@ import numpy as np
 
 from riserfoam import tables
 from riserfoam import foamfields as ff
+
+
+def motion_entry(case, name):
+    """an entry of the riser's motion dictionary, as text (None if absent)"""
+    done = subprocess.run(["foamDictionary", "-entry", "motion/" + name, "-value",
+                           os.path.join(case, "constant/riserProperties")],
+                          stdout=subprocess.PIPE, stderr=subprocess.DEVNULL, text=True)
+    return done.stdout.strip() if done.returncode == 0 else None
+
+
+def local_sway(case, z):
+    """the amplitude of the riser's sway at heights z, and a title for the
+    motion: the modes' (in x and y), None for a table"""
+    if motion_entry(case, "type") != "modes":
+        return None, "the riser's motion table"
+    foot, length = float(motion_entry(case, "foot")), float(motion_entry(case, "length"))
+    standing = (motion_entry(case, "wave") or "standing") == "standing"
+    sway = np.zeros_like(z)
+    numbers = []
+    for component in ("x", "y"):
+        text = motion_entry(case, component) or "()"
+        for n, a, _, _ in re.findall(r"\(\s*(\S+)\s+(\S+)\s+(\S+)\s+(\S+)\s*\)", text):
+            shape = np.abs(np.sin(float(n) * math.pi * (z - foot) / length)) if standing else 1.0
+            sway = np.hypot(sway, float(a) * shape)
+            numbers.append(str(int(float(n))))
+    return sway, "a riser in mode %s" % ", ".join(numbers)
+
+
+def centre_line_speed(stats):
+    """u_cm of the statistics (their lifting efficiency is v_z/u_cm)"""
+    transport = tables.read(os.path.join(stats, "transport.dat"))
+    for urz, eta in zip(transport["Urz"], transport["liftingEfficiency"]):
+        if math.isfinite(urz) and math.isfinite(eta) and eta != 0:
+            return urz / eta
+    return None
 
 
 def main():
@@ -40,11 +77,8 @@ def main():
     points = ff.read_vectors(os.path.join(case, "constant/polyMesh/points"))
     length = max(p[2] for p in points) - min(p[2] for p in points)
     z = z0 + (np.arange(m) + 0.5) * length / m
-    riser = open(os.path.join(case, "constant/riserProperties")).read()
-    ucm = float(re.search(r"uCentre\s+(?:\[[^\]]*\]\s*)?(\S+);", riser).group(1))
-    n, a = (float(v) for v in re.search(r"x\s+\(\((\S+)\s+(\S+)", riser).groups())
-    L = float(re.search(r"length\s+(\S+);", riser).group(1))
-    amplitude = a * np.abs(np.sin(n * math.pi * z / L))
+    ucm = centre_line_speed(stats)
+    amplitude, title = local_sway(case, z)
 
     def mean(table, prefix):
         values = np.array([np.asarray(table["%s%d" % (prefix, k)])[rows] for k in range(m)])
@@ -66,16 +100,18 @@ def main():
     ax[0].set_ylabel("height z [m]")
     velocity = mean(urz, "Urz_z")
     ax[1].plot(velocity, z, "o-", label="mean v_z [m/s]")
-    ax[1].plot(velocity / ucm, z, "s--", label="lifting efficiency v_z/u_cm")
+    if ucm:
+        ax[1].plot(velocity / ucm, z, "s--", label="lifting efficiency v_z/u_cm")
     ax[1].legend(fontsize=8)
     ax[1].set_xlabel("ore velocity along the riser")
     ax[2].plot(wall, z, "o-", label="wall")
     ax[2].plot(pair, z, "s-", label="pair")
     ax[2].set_xlabel("contacts per second in each slice")
     ax[2].legend(fontsize=8)
-    sway = ax[2].twiny()
-    sway.plot(amplitude, z, "k:", lw=1)
-    sway.set_xlabel("local sway amplitude [m] (dotted)")
+    if amplitude is not None:
+        sway = ax[2].twiny()
+        sway.plot(amplitude, z, "k:", lw=1)
+        sway.set_xlabel("local sway amplitude [m] (dotted)")
     # outflow.dat, or one outflow_procN.dat per processor in parallel
     folder = os.path.join(case, "postProcessing/lagrangian/kinematicCloud/riserOutflow")
     top, back = [], 0
@@ -89,9 +125,9 @@ def main():
     ax[3].set_ylabel("ores")
     for a_ in ax[:3]:
         a_.set_ylim(z0, z0 + length)
-    fig.suptitle("ores through the section z = %g-%g m of a riser in mode %d; slices averaged"
+    fig.suptitle("ores through the section z = %g-%g m of %s; slices averaged"
                  " over t = %g-%g s; %d ores out at the top"
-                 % (z0, z0 + length, n, start, t[-1], len(top)))
+                 % (z0, z0 + length, title, start, t[-1], len(top)))
     fig.tight_layout()
     fig.savefig(output, dpi=110)
     print("plotAlongRiser.py: %s (%d ores out at the top, %d back through the inlet)"
