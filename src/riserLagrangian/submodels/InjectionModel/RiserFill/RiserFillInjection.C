@@ -24,8 +24,26 @@ void Foam::RiserFillInjection<CloudType>::fill()
     const dictionary& dict = this->coeffDict();
     const scalar D = this->riser_.flow().diameter();
     const scalar R = 0.5*D;
+    // the amount: a solids fraction, or a number of ores
+    if (dict.found("solidsFraction") == dict.found("number"))
+    {
+        FatalIOErrorInFunction(dict)
+            << "riserFill takes its amount from one of the entries"
+            << " 'solidsFraction' (C_v, in (0, 0.5]) and 'number' (of ores,"
+            << " whole, in [1, 1e8]), "
+            << (dict.found("number") ? "not both" : "and has neither") << nl
+            << exit(FatalIOError);
+    }
+    const bool counted = dict.found("number");
     const scalar Cv =
-        checkedEntry::inRange(dict, "solidsFraction", 0, false, 0.5, true);
+        counted
+      ? 0
+      : checkedEntry::inRange(dict, "solidsFraction", 0, false, 0.5, true);
+    const label number = counted ? checkedEntry::count(dict, "number", 1, 100000000) : 0;
+    const std::string amount =
+        counted
+      ? "entry 'number' = " + Foam::name(number)
+      : "entry 'solidsFraction' = " + Foam::name(Cv);
 
     // the section: the mesh's extent along the axis; periodic with cyclics
     const riserModel::sectionExtent& section = this->riser_.section();
@@ -114,8 +132,12 @@ void Foam::RiserFillInjection<CloudType>::fill()
 
     while (true)
     {
+        if (counted && places.size() == number)
+        {
+            break;
+        }
         const oreSource::ore o = source.draw();
-        if (target - placed < 0.5*o.volume())
+        if (!counted && target - placed < 0.5*o.volume())
         {
             break;
         }
@@ -139,20 +161,21 @@ void Foam::RiserFillInjection<CloudType>::fill()
         if (!done)
         {
             FatalIOErrorInFunction(dict)
-                << "entry 'solidsFraction' = " << Cv << " is beyond what"
-                << " random sequential placement reaches here: ore "
-                << places.size() + 1 << " (d = " << o.d << " m) found no place"
-                << " in " << source.maxAttempts() << " attempts at C_v = "
-                << placed/V << " (equal spheres jam near 0.38); lower"
-                << " solidsFraction into (0, " << placed/V << "]" << nl
-                << exit(FatalIOError);
+                << amount.c_str() << " is beyond what random sequential"
+                << " placement reaches here: ore " << places.size() + 1
+                << " (d = " << o.d << " m) found no place in "
+                << source.maxAttempts() << " attempts at C_v = " << placed/V
+                << " (equal spheres jam near 0.38); lower "
+                << (counted ? "number to at most " : "solidsFraction into (0, ")
+                << (counted ? std::to_string(places.size()) : std::string(Foam::name(placed/V)) + "]").c_str()
+                << nl << exit(FatalIOError);
         }
     }
     if (places.empty())
     {
         const scalar d = source.meanDiameter();
         FatalIOErrorInFunction(dict)
-            << "entry 'solidsFraction' = " << Cv << " places no ore: the"
+            << amount.c_str() << " places no ore: the"
             << " section holds " << V << " m^3 and one ore of diameter "
             << d << " m is " << pi/6*pow3(d)/V << " of it" << nl
             << exit(FatalIOError);
@@ -177,8 +200,16 @@ void Foam::RiserFillInjection<CloudType>::fill()
     this->setModelProperty("fillSolidsFraction", placed/V);
 
     Info<< "    riserFill: placed " << places.size() << " ores, solids"
-        << " fraction C_v = " << placed/V << " (requested " << Cv
-        << ") in the " << (periodic ? "periodic " : "") << "riser section of"
+        << " fraction C_v = " << placed/V << " (requested ";
+    if (counted)
+    {
+        Info<< number << " ores";
+    }
+    else
+    {
+        Info<< Cv;
+    }
+    Info<< ") in the " << (periodic ? "periodic " : "") << "riser section of"
         << " length " << L << " m and volume " << V << " m^3" << endl;
 }
 
@@ -291,7 +322,7 @@ Foam::RiserFillInjection<CloudType>::RiserFillInjection
 :
     RiserOreInjection<CloudType>
     (
-        dict, owner, modelName, typeName, {"solidsFraction"}
+        dict, owner, modelName, typeName, {"solidsFraction", "number"}
     )
 {
     // the fill is made in the step that holds SOI: on a restart after it,
