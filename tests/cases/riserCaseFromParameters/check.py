@@ -30,6 +30,10 @@ log = open(os.path.join(case, "log.riserParcelFoam")).read()
 if not log.rstrip().endswith("End") or not os.path.isdir(os.path.join(case, "0.5")):
     print("FAILED: the run did not reach the end of its period, 0.5 s")
     checks.failures += 1
+written = [t for t in ("0.0625", "0.125", "0.1875", "0.25", "0.3125", "0.375", "0.4375", "0.5")
+           if os.path.isdir(os.path.join(case, t))]
+print("eight writes in the period: %s" % ("ok" if len(written) == 8 else "FAILED: %s" % written))
+checks.failures += len(written) != 8
 
 # the given values, as the case holds them (exact: written from them)
 riser = os.path.join(case, "constant", "riserProperties")
