@@ -17,6 +17,10 @@ riser section from bin/riserMesh -ends cyclic), the riser frame; the
 Poiseuille profile also in the lab frame (riserProperties' frame lab: the
 flow moves with the riser, its wall is movingWallVelocity).
 """
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import os
 import re
 import sys

@@ -8,6 +8,10 @@ at each time vtkCloud wrote. Needs no display (nothing is rendered).
 usage: pvbatch plotCloudFields.py <cloud>.vtp.series <png> [origId]
 SPDX-License-Identifier: GPL-3.0-or-later
 """
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import sys
 
 import matplotlib

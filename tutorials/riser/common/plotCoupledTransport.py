@@ -32,6 +32,10 @@ riserTransportStatistics. Six panels:
     U_z there.
 Prints the measured numbers behind them.
 """
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import math
 import os
 import sys

@@ -28,6 +28,10 @@ its end, the wall contacts and their mean normal restitution (the normal
 speed after over before, UnOut/UnIn of contacts.dat), and the largest
 differences between the two tracks at the common times.
 """
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import argparse
 import math
 import os

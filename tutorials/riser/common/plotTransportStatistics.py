@@ -27,6 +27,10 @@ another) are drawn in the same panels, one colour a run, the means only
 for the profiles; --labels names the runs in the legends (default: the
 case folders' names). The runs' speed bins must have the same width.
 """
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import os
 import re
 import sys

@@ -7,6 +7,10 @@ by its height (which grows with time), from the riserParticleTable.
 usage: xvfb-run -a pvbatch renderTrack.py <case.foam> <particles.dat> <png>
 SPDX-License-Identifier: GPL-3.0-or-later
 """
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import sys
 
 from paraview.simple import (Calculator, GetActiveViewOrCreate, GetColorTransferFunction,

@@ -10,6 +10,10 @@ velocity relative to the riser and lifting efficiency, and the wall and
 pair contacts per second in each slice, against height, beside the local
 amplitude of the riser's sway (of a mode); and from riserOutflow the
 transit times of the ores that left at the top."""
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import math
 import os
 import re

@@ -1,7 +1,13 @@
 """Transit times and lifting efficiencies of the ore through the 1,000 m
 riser in its 5th mode and through the rigid riser of the same largest
 amplitude (riserParticle's particle tables); writes transit.dat and, with
-matplotlib, wholeRiserModes.png."""
+matplotlib, wholeRiserModes.png.
+
+usage: transit.py     (in the case folder, after its riserParticle runs)"""
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import sys
 
 import numpy as np

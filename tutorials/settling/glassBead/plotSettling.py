@@ -1,6 +1,12 @@
 #!/usr/bin/python3
 """Settling speed of the glass bead against time, from the lagrangian
-velocity the solver writes at each write time."""
+velocity the solver writes at each write time; writes settlingSpeed.png.
+
+usage: plotSettling.py     (in the case folder, after its run)"""
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
 import os
 
 import matplotlib
