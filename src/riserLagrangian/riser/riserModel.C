@@ -463,15 +463,14 @@ tableRows readTableList(const dictionary& m)
 riser::MotionPtr readTable(const dictionary& m)
 {
     checkedEntry::allowedKeys(m, {"type", "file", "rows"});
-    if (m.found("file") == m.found("rows"))
-    {
-        FatalIOErrorInFunction(m)
-            << "a motion of type table takes its rows (t z x y) from one of"
-            << " the entries 'file' (a CSV file) and 'rows' (an OpenFOAM"
-            << " list), " << (m.found("file") ? "not both" : "and has neither")
-            << nl << exit(FatalIOError);
-    }
-    const tableRows table = m.found("file") ? readTableFile(m) : readTableList(m);
+    const tableRows table =
+        checkedEntry::firstOfTwo
+        (
+            m, "a motion of type table takes its rows (t z x y)",
+            "file", "a CSV file", "rows", "an OpenFOAM list"
+        )
+      ? readTableFile(m)
+      : readTableList(m);
     const std::vector<FixedList<scalar, 4>>& rows = table.rows;
     auto refuse = [&](const std::string& where, const std::string& what)
     {

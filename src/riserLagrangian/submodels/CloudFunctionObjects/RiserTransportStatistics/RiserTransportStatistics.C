@@ -64,6 +64,19 @@ void Foam::RiserTransportStatistics<CloudType>::contactTally::clear()
 
 
 template<class CloudType>
+Foam::word Foam::RiserTransportStatistics<CloudType>::prefixed
+(
+    const word& prefix,
+    const word& name
+)
+{
+    std::string capitalised(name);
+    capitalised[0] = char(toupper(capitalised[0]));
+    return word(prefix + capitalised);
+}
+
+
+template<class CloudType>
 Foam::word Foam::RiserTransportStatistics<CloudType>::propertyName
 (
     const bool pair,
@@ -74,21 +87,7 @@ Foam::word Foam::RiserTransportStatistics<CloudType>::propertyName
     {
         return name == "energy" ? word("wallEnergy") : name;
     }
-    std::string capitalised(name);
-    capitalised[0] = char(toupper(capitalised[0]));
-    return word("pair" + capitalised);
-}
-
-
-template<class CloudType>
-Foam::word Foam::RiserTransportStatistics<CloudType>::exchangeProperty
-(
-    const label k
-)
-{
-    std::string name(exchangeNames_[k]);
-    name[0] = char(toupper(name[0]));
-    return word("axial" + name);
+    return prefixed("pair", name);
 }
 
 
@@ -584,7 +583,7 @@ Foam::RiserTransportStatistics<CloudType>::RiserTransportStatistics
         forAll(exchange_, k)
         {
             scalarList slices;
-            this->getModelProperty(exchangeProperty(k), slices);
+            this->getModelProperty(prefixed("axial", exchangeNames_[k]), slices);
             if (slices.size() == axialBins_)
             {
                 exchange_[k] = slices;
@@ -702,7 +701,7 @@ void Foam::RiserTransportStatistics<CloudType>::write()
     forAll(exchange_, k)
     {
         riserCompatibility::listCombineAll(exchange_[k], plusEqOp<scalar>());
-        this->setModelProperty(exchangeProperty(k), exchange_[k]);
+        this->setModelProperty(prefixed("axial", exchangeNames_[k]), exchange_[k]);
         if (!Pstream::master())
         {
             exchange_[k] = Zero;

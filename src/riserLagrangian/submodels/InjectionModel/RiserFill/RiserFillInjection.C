@@ -25,16 +25,12 @@ void Foam::RiserFillInjection<CloudType>::fill()
     const scalar D = this->riser_.flow().diameter();
     const scalar R = 0.5*D;
     // the amount: a solids fraction, or a number of ores
-    if (dict.found("solidsFraction") == dict.found("number"))
-    {
-        FatalIOErrorInFunction(dict)
-            << "riserFill takes its amount from one of the entries"
-            << " 'solidsFraction' (C_v, in (0, 0.5]) and 'number' (of ores,"
-            << " whole, in [1, 1e8]), "
-            << (dict.found("number") ? "not both" : "and has neither") << nl
-            << exit(FatalIOError);
-    }
-    const bool counted = dict.found("number");
+    const bool counted =
+        !checkedEntry::firstOfTwo
+        (
+            dict, "riserFill takes its amount", "solidsFraction",
+            "C_v, in (0, 0.5]", "number", "of ores, whole, in [1, 1e8]"
+        );
     const scalar Cv =
         counted
       ? 0
@@ -165,10 +161,16 @@ void Foam::RiserFillInjection<CloudType>::fill()
                 << " placement reaches here: ore " << places.size() + 1
                 << " (d = " << o.d << " m) found no place in "
                 << source.maxAttempts() << " attempts at C_v = " << placed/V
-                << " (equal spheres jam near 0.38); lower "
-                << (counted ? "number to at most " : "solidsFraction into (0, ")
-                << (counted ? std::to_string(places.size()) : std::string(Foam::name(placed/V)) + "]").c_str()
-                << nl << exit(FatalIOError);
+                << " (equal spheres jam near 0.38); lower ";
+            if (counted)
+            {
+                FatalIOError << "number to at most " << places.size();
+            }
+            else
+            {
+                FatalIOError << "solidsFraction into (0, " << placed/V << "]";
+            }
+            FatalIOError << nl << exit(FatalIOError);
         }
     }
     if (places.empty())
