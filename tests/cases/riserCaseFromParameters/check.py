@@ -101,8 +101,21 @@ for contacts, model, pairs in (("wall", "riserContact", False), ("none", "none",
                                                               "ok" if ok else "FAILED"))
     checks.failures += not ok
 
+
+def stops_naming(cases):
+    """each (args, option): riserCase stops naming the option, writing nothing"""
+    for args, named in cases:
+        bad = subprocess.run([riser_case, os.path.join(work, "bad")] + args,
+                             stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        ok = bad.returncode != 0 and named in bad.stdout and not os.path.exists(os.path.join(work, "bad"))
+        print("riserCase %-40s stops naming %-9s: %s" % (" ".join(args), named, "ok" if ok else "FAILED"))
+        if not ok:
+            print(bad.stdout)
+        checks.failures += not ok
+
+
 # hostile input: stops, naming the option
-for args, named in (
+stops_naming((
         (["-D", "-0.1"], "-D"),
         (["-D", "nan"], "-D"),
         (["-d", "0.06"], "-d"),
@@ -124,14 +137,7 @@ for args, named in (
         (["-L", "0.01"], "-d"),
         (["-contacts", "wet"], "-contacts"),
         (["-uBulkk", "1"], "-uBulkk"),
-        (["-period", "2"], "-period")):
-    bad = subprocess.run([riser_case, os.path.join(work, "bad")] + args,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    ok = bad.returncode != 0 and named in bad.stdout and not os.path.exists(os.path.join(work, "bad"))
-    print("riserCase %-40s stops naming %-9s: %s" % (" ".join(args), named, "ok" if ok else "FAILED"))
-    if not ok:
-        print(bad.stdout)
-    checks.failures += not ok
+        (["-period", "2"], "-period")))
 # a riser that varies along its length: an open section fed at its foot
 def run_open(name, args):
     """make and run an open-section case; its folder and solver log"""
@@ -192,7 +198,7 @@ if log:
     print("table: the table copied, the section at z = 15 m, %d ores fed, the run ended: %s"
           % (added(log), "ok" if ok else "FAILED"))
     checks.failures += not ok
-for args, named in (
+stops_naming((
         (["-mode", "3"], "-mode"),
         (["-motion", "modes"], "-riserLength"),
         (["-motion", "modes", "-riserLength", "100", "-z0", "99.5"], "-z0"),
@@ -206,14 +212,7 @@ for args, named in (
         (["-motion", "table", "-table", os.path.join(work, "none.csv"), "-z0", "15", "-endTime", "1"], "-table"),
         (["-feed", "0.5"], "-feed"),
         (["-endTime", "1", "-periods", "2"], "-endTime"),
-        (["-motion", "modes", "-riserLength", "100", "-feed", "-1"], "-feed")):
-    bad = subprocess.run([riser_case, os.path.join(work, "bad")] + args,
-                         stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    ok = bad.returncode != 0 and named in bad.stdout and not os.path.exists(os.path.join(work, "bad"))
-    print("riserCase %-40s stops naming %-9s: %s" % (" ".join(args), named, "ok" if ok else "FAILED"))
-    if not ok:
-        print(bad.stdout)
-    checks.failures += not ok
+        (["-motion", "modes", "-riserLength", "100", "-feed", "-1"], "-feed")))
 existing = subprocess.run([riser_case, case], stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
 ok = existing.returncode != 0 and "exists" in existing.stdout
 print("riserCase into an existing folder stops: %s" % ("ok" if ok else "FAILED"))
