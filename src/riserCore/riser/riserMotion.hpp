@@ -33,6 +33,14 @@
 
 namespace riser {
 
+//- Where a motion is known: every height and time, but for a tabulated
+//  one (riser::TableMotion), which throws std::out_of_range beyond
+struct MotionDomain
+{
+    double zMin = -HUGE_VAL, zMax = HUGE_VAL;   //!< heights [m]
+    double tMin = -HUGE_VAL, tMax = HUGE_VAL;   //!< times [s]
+};
+
 //- The axis' kinematics at one height and time (z components zero)
 struct AxisState
 {
@@ -72,6 +80,10 @@ public:
     //- The largest distance |(x_c, y_c)| of the axis from the z axis over
     //  every height at time t
     virtual double axisOffsetBound(double t) const = 0;
+
+    //- The heights and times where the motion is known (callers check
+    //  that their runs fit before they start)
+    virtual MotionDomain domain() const { return MotionDomain(); }
 
     //- The kinematics are the same at every time (a riser at rest, or one
     //  standing aside)

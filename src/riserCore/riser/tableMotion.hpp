@@ -201,6 +201,10 @@ public:
     double maxAcceleration() const override { return maxAcceleration_; }
     double maxSlope() const override { return maxSlope_; }
     double axisOffsetBound(double) const override { return maxOffset_; }
+    MotionDomain domain() const override
+    {
+        return MotionDomain{z_.front(), z_.back(), t0_, endTime()};
+    }
 
     bool steady() const override { return maxSpeed_ == 0.0; }
     bool uniformAlongAxis() const override { return false; }

@@ -138,6 +138,16 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
             << " (riserMesh -ends wall, placed at the riser's heights)"
             << nl << exit(FatalIOError);
     }
+    if (lab_)
+    {
+        const Time& time = mesh_.time();
+        checkMotionDomain
+        (
+            dict_, lab_->motion(), bb.min().z(), bb.max().z(),
+            time.startTime().value(), time.endTime().value(),
+            "the mesh (its heights) and the run (startTime to endTime)"
+        );
+    }
 }
 
 
@@ -151,6 +161,31 @@ const Foam::riserModel& Foam::riserModel::New(const polyMesh& mesh)
         ptr->store();
     }
     return mesh.lookupObject<riserModel>(typeName);
+}
+
+
+void Foam::riserModel::checkMotionDomain
+(
+    const dictionary& dict,
+    const riser::RiserMotion& motion,
+    const scalar zMin,
+    const scalar zMax,
+    const scalar t0,
+    const scalar t1,
+    const string& what
+)
+{
+    const riser::MotionDomain d = motion.domain();
+    if (zMin < d.zMin || zMax > d.zMax || t0 < d.tMin || t1 > d.tMax)
+    {
+        FatalIOErrorInFunction(dict)
+            << what.c_str() << " needs the riser's motion at heights [" << zMin
+            << ", " << zMax << "] m and times [" << t0 << ", " << t1
+            << "] s, beyond its " << motion.type() << " motion, known at"
+            << " heights [" << d.zMin << ", " << d.zMax << "] m and times ["
+            << d.tMin << ", " << d.tMax << "] s only" << nl
+            << exit(FatalIOError);
+    }
 }
 
 
@@ -645,8 +680,6 @@ riser::MotionPtr readMotion(const dictionary& dict)
     return motion;
 }
 
-//- The kinematic viscosity nu of constant/transportProperties, beside the
-//  riserProperties of dict
 //- The kinematic viscosity nu of constant/transportProperties, beside the
 //  riserProperties of dict; without that file, -1, or with required
 //  (what needs it) FatalIOError

@@ -6,6 +6,7 @@
 #include "riserDeformation.H"
 #include "riserModel.H"
 #include "coreVector.H"
+#include "boundBox.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -40,6 +41,15 @@ Foam::riserDeformation::riserDeformation
         )
     );
     motion_ = riserModel::read(riserDict).motionPtr();
+    // curPoints asks for the axis at t = 0 and at the run's times
+    const boundBox bb(points0_, true);
+    riserModel::checkMotionDomain
+    (
+        riserDict, *motion_, bb.min().z(), bb.max().z(),
+        min(scalar(0), mesh.time().startTime().value()),
+        mesh.time().endTime().value(),
+        "the deforming mesh (its heights, from t = 0 to endTime)"
+    );
 }
 
 
