@@ -10,6 +10,14 @@
 // the n-th mode at the shedding frequency cross-flow, a mode at twice it
 // in-line.
 //
+// Tabulated shapes (ModeShapes): a riser whose tension varies with depth,
+// or that has bending stiffness, vibrates in shapes that are not sines; a
+// riser-dynamics code's eigen-analysis gives them as phi_n at heights
+// z_0 < ... < z_{M-1}. Mode n then takes the n-th column, joined along z as
+// riser::HeightGrid joins samples (slope continuous, curvature piecewise
+// linear), as a standing wave a_n phi_n(z) sin(omega_n t + phase_n); the
+// riser is known at the table's heights only (std::out_of_range beyond).
+//
 // Besides the axis, its velocity and acceleration, a motion that varies
 // along the riser has derivatives along it (AxisState): the slope
 // d(x_c, y_c)/dz, its rate d(U_r, V_r)/dz and the curvature
@@ -29,16 +37,22 @@
 //       x ( (5 0.5 0.2 0) );       // (n amplitude [m] frequency [Hz] phase [rad])
 //       y ( );                     // either list may be empty or left out
 //   }
+// or, with tabulated shapes (in place of foot, length and wave):
+//       shapes ( (0 0 0) (10 0.031 0.063) ... );   // (z phi_1 phi_2 ...)
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_RISER_MODESMOTION_HPP
 #define RISERCORE_RISER_MODESMOTION_HPP
 
 #include "checks.hpp"
+#include "riser/heightGrid.hpp"
 #include "riser/riserMotion.hpp"
 
+#include <array>
 #include <cmath>
 #include <memory>
+#include <sstream>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -54,16 +68,107 @@ struct Mode
     double phase;       //!< [rad], finite
 };
 
+//- Mode shapes phi_n(z) tabulated at heights (column n - 1: mode n),
+//  joined along z as riser::HeightGrid joins samples
+class ModeShapes
+{
+public:
+    //- The tolerance of the sampling check (relative), the motion table's
+    static constexpr double samplingTolerance = 1e-2;
+
+    //- heights (M >= 2, increasing) and columns[n - 1][i]: phi_n at height
+    //  i, finite; std::invalid_argument otherwise, or where the heights are
+    //  too coarse for a shape (naming the spacing needed)
+    ModeShapes(std::vector<double> heights, std::vector<std::vector<double>> columns)
+    :
+        grid_(std::move(heights), "riser::ModeShapes"), phi_(std::move(columns))
+    {
+        const char* law = "riser::ModeShapes";
+        requireInRange(law, "number of shapes", double(phi_.size()), 1.0, Bound::closed,
+                       HUGE_VAL, Bound::open);
+        double error = 0.0;
+        for (const std::vector<double>& phi : phi_)
+        {
+            if (phi.size() != std::size_t(grid_.size()))
+            {
+                throw std::invalid_argument(std::string(law) + ": a value per height needed");
+            }
+            for (double v : phi)
+            {
+                requireInRange(law, "shape value", v, -HUGE_VAL, Bound::open, HUGE_VAL,
+                               Bound::open);
+            }
+            const auto at = [&](int k) { return phi[k]; };
+            std::vector<double> slope(phi.size());
+            double maxValue = 0.0, maxSlope = 0.0;
+            for (int i = 0; i < grid_.size(); ++i)
+            {
+                slope[i] = grid_.slope(at, i);
+                maxValue = std::max(maxValue, std::abs(phi[i]));
+                maxSlope = std::max(maxSlope, std::abs(slope[i]));
+            }
+            if (maxSlope > 0)
+            {
+                error = std::max(error, grid_.slopeErrorEstimate(at)/maxSlope);
+            }
+            slope_.push_back(std::move(slope));
+            // the interpolant may overshoot its nodes: the motion table's
+            // margin of 5 %
+            maxAbs_.push_back({1.05*maxValue, 1.05*maxSlope});
+        }
+        if (error > samplingTolerance)
+        {
+            std::ostringstream msg;
+            msg << law << ": the heights are too coarse for the shapes (the nodal slopes'"
+                << " error estimate is " << error << " of the largest slope); sample at most"
+                << " every " << grid_.maxSpacing()*std::sqrt(samplingTolerance/error)
+                << " m along z";
+            throw std::invalid_argument(msg.str());
+        }
+    }
+
+    int count() const { return static_cast<int>(phi_.size()); }
+    const HeightGrid& grid() const { return grid_; }
+
+    //- phi_n, its slope and its curvature in a piece of the grid
+    void evaluate(int n, const HeightGrid::Piece& p, double (&out)[3]) const
+    {
+        double H[3][4];
+        HeightGrid::basis(p, H);
+        const std::vector<double>& f = phi_[n - 1];
+        const std::vector<double>& m = slope_[n - 1];
+        for (int d = 0; d < 3; ++d)
+        {
+            out[d] = H[d][0]*f[p.i] + H[d][1]*m[p.i] + H[d][2]*f[p.i + 1] + H[d][3]*m[p.i + 1];
+        }
+    }
+
+    //- Bounds of |phi_n| (nz = 0) and of its slope (nz = 1) over the riser
+    double maxAbs(int n, int nz) const { return maxAbs_[n - 1][nz]; }
+
+private:
+    HeightGrid grid_;
+    std::vector<std::vector<double>> phi_, slope_;
+    std::vector<std::array<double, 2>> maxAbs_;
+};
+
+using ShapesPtr = std::shared_ptr<const ModeShapes>;
+
 class ModesMotion final : public StateMotion
 {
 public:
     enum class Wave { standing, travelling };
 
-    //- The riser from foot to foot + length, the modes of x_c and of y_c
+    //- The riser from foot to foot + length, the modes of x_c and of y_c;
+    //  with shapes, the modes' tabulated shapes (standing waves, the riser
+    //  from the table's first height to its last: foot and length are
+    //  those)
     ModesMotion(double foot, double length, Wave wave, std::vector<Mode> x,
-                std::vector<Mode> y)
+                std::vector<Mode> y, ShapesPtr shapes = nullptr)
     :
-        foot_(foot), length_(length), wave_(wave), x_(std::move(x)), y_(std::move(y))
+        foot_(shapes ? shapes->grid().front() : foot),
+        length_(shapes ? shapes->grid().back() - shapes->grid().front() : length),
+        wave_(wave), x_(std::move(x)), y_(std::move(y)), shapes_(std::move(shapes))
     {
         const char* law = "riser::ModesMotion";
         requireInRange(law, "foot", foot, -HUGE_VAL, Bound::open, HUGE_VAL, Bound::open);
@@ -77,15 +182,31 @@ public:
                 requireNonNegative(law, "omega", m.omega);
                 requireInRange(law, "phase", m.phase, -HUGE_VAL, Bound::open,
                                HUGE_VAL, Bound::open);
+                if (shapes_ && m.number > shapes_->count())
+                {
+                    throw std::invalid_argument
+                    (
+                        std::string(law) + ": mode " + std::to_string(m.number)
+                      + " has no shape: the shapes' table has "
+                      + std::to_string(shapes_->count())
+                    );
+                }
             }
+        }
+        if (shapes_ && wave_ != Wave::standing)
+        {
+            throw std::invalid_argument
+            (
+                std::string(law) + ": tabulated shapes are standing waves"
+            );
         }
     }
 
     static MotionPtr make(double foot, double length, Wave wave, std::vector<Mode> x,
-                          std::vector<Mode> y)
+                          std::vector<Mode> y, ShapesPtr shapes = nullptr)
     {
         return std::make_shared<const ModesMotion>(foot, length, wave, std::move(x),
-                                                   std::move(y));
+                                                   std::move(y), std::move(shapes));
     }
 
     double foot() const { return foot_; }
@@ -93,10 +214,24 @@ public:
     Wave wave() const { return wave_; }
     const std::vector<Mode>& x() const { return x_; }
     const std::vector<Mode>& y() const { return y_; }
+    //- The tabulated shapes (null: the sines)
+    const ShapesPtr& shapes() const { return shapes_; }
     //- k_n = n pi / L_r [1/m]
     double wavenumber(const Mode& m) const { return m.number*M_PI/length_; }
 
     const char* type() const override { return "modes"; }
+
+    //- Tabulated shapes are known at their heights only
+    MotionDomain domain() const override
+    {
+        MotionDomain d;
+        if (shapes_)
+        {
+            d.zMin = shapes_->grid().front();
+            d.zMax = shapes_->grid().back();
+        }
+        return d;
+    }
 
     AxisState computeState(double z, double t) const override
     {
@@ -170,6 +305,7 @@ private:
 
     Derivatives sum(const std::vector<Mode>& list, double z, double t) const
     {
+        if (shapes_) return tabulatedSum(list, z, t);
         Derivatives d;
         const double zeta = z - foot_;
         for (const Mode& m : list)
@@ -201,13 +337,48 @@ private:
         return d;
     }
 
-    //- sum a omega^nt k^nz over the list
+    //- The sum of standing modes of tabulated shapes at one point
+    Derivatives tabulatedSum(const std::vector<Mode>& list, double z, double t) const
+    {
+        if (!shapes_->grid().contains(z))
+        {
+            std::ostringstream msg;
+            msg << "riser::ModesMotion: height " << z << " m outside the shapes' heights ["
+                << shapes_->grid().front() << ", " << shapes_->grid().back() << "] m";
+            throw std::out_of_range(msg.str());
+        }
+        const HeightGrid::Piece piece = shapes_->grid().piece(z);
+        Derivatives d;
+        for (const Mode& m : list)
+        {
+            double phi[3];
+            shapes_->evaluate(m.number, piece, phi);
+            const double a = m.amplitude, w = m.omega;
+            const double st = std::sin(w*t + m.phase), ct = std::cos(w*t + m.phase);
+            d.value += a*phi[0]*st;
+            d.dt += a*w*phi[0]*ct;
+            d.dtt -= a*w*w*phi[0]*st;
+            d.dz += a*phi[1]*st;
+            d.dzt += a*w*phi[1]*ct;
+            d.dzz += a*phi[2]*st;
+        }
+        return d;
+    }
+
+    //- The bound of |phi_n| (nz = 0) or of its slope (nz = 1): k_n^nz of
+    //  a sine, the nodes' of a tabulated shape
+    double shapeBound(const Mode& m, int nz) const
+    {
+        return shapes_ ? shapes_->maxAbs(m.number, nz) : std::pow(wavenumber(m), nz);
+    }
+
+    //- sum a omega^nt (bound of the shape's nz-th z derivative) over the list
     double bound(const std::vector<Mode>& list, int nt, int nz) const
     {
         double s = 0.0;
         for (const Mode& m : list)
         {
-            s += m.amplitude*std::pow(m.omega, nt)*std::pow(wavenumber(m), nz);
+            s += m.amplitude*std::pow(m.omega, nt)*shapeBound(m, nz);
         }
         return s;
     }
@@ -218,7 +389,8 @@ private:
         for (const Mode& m : list)
         {
             s += wave_ == Wave::standing
-                ? std::abs(m.amplitude*std::sin(m.omega*t + m.phase)) : m.amplitude;
+                ? std::abs(m.amplitude*std::sin(m.omega*t + m.phase))*shapeBound(m, 0)
+                : m.amplitude;
         }
         return s;
     }
@@ -226,6 +398,7 @@ private:
     double foot_, length_;
     Wave wave_;
     std::vector<Mode> x_, y_;
+    ShapesPtr shapes_;
 };
 
 } // namespace riser

@@ -8,9 +8,10 @@
 // differences of the samples (one-sided of the same order in the two
 // first and last intervals): position, velocity and acceleration are
 // continuous, and the interpolation error falls as h^4. Along the riser,
-// cubic Hermite pieces whose nodal slopes are the second-order differences
-// of the samples (three-point, for any spacing): the slope is continuous,
-// the curvature piecewise linear in z.
+// each time's samples as riser::HeightGrid joins them: cubic Hermite pieces
+// whose nodal slopes are the second-order differences of the samples
+// (three-point, for any spacing): the slope is continuous, the curvature
+// piecewise linear in z.
 //
 // Sampling: a table too coarse for the motion it holds is refused
 // (checkSampling). In time the fourth- and second-order acceleration
@@ -29,6 +30,7 @@
 #define RISERCORE_RISER_TABLEMOTION_HPP
 
 #include "checks.hpp"
+#include "riser/heightGrid.hpp"
 #include "riser/riserMotion.hpp"
 
 #include <algorithm>
@@ -52,26 +54,13 @@ public:
     TableMotion(std::vector<double> heights, double t0, double h, int N,
                 std::vector<double> x, std::vector<double> y)
     :
-        z_(std::move(heights)), t0_(t0), h_(h), N_(N)
+        grid_(std::move(heights), "riser::TableMotion"), t0_(t0), h_(h), N_(N)
     {
         const char* law = "riser::TableMotion";
-        const int M = static_cast<int>(z_.size());
-        requireInRange(law, "number of heights", M, 2, Bound::closed, HUGE_VAL, Bound::open);
+        const int M = grid_.size();
         requireInRange(law, "number of times", N, 6, Bound::closed, HUGE_VAL, Bound::open);
         requireInRange(law, "t0", t0, -HUGE_VAL, Bound::open, HUGE_VAL, Bound::open);
         requireInRange(law, "time interval", h, 0.0, Bound::open, HUGE_VAL, Bound::open);
-        for (int i = 0; i < M; ++i)
-        {
-            requireInRange(law, "height", z_[i], -HUGE_VAL, Bound::open, HUGE_VAL, Bound::open);
-            if (i > 0 && !(z_[i] > z_[i - 1]))
-            {
-                throw std::invalid_argument
-                (
-                    std::string(law) + ": the heights must increase (height "
-                  + std::to_string(i) + ")"
-                );
-            }
-        }
         if (x.size() != std::size_t(M)*N || y.size() != std::size_t(M)*N)
         {
             throw std::invalid_argument(std::string(law) + ": M N displacements needed");
@@ -96,7 +85,7 @@ public:
                                                    std::move(x), std::move(y));
     }
 
-    const std::vector<double>& heights() const { return z_; }
+    const std::vector<double>& heights() const { return grid_.heights(); }
     double startTime() const { return t0_; }
     double endTime() const { return t0_ + h_*(N_ - 1); }
     double interval() const { return h_; }
@@ -124,7 +113,8 @@ public:
             msg << "riser::TableMotion: the heights are too coarse for the motion"
                 << " (the nodal slopes' error estimate is " << heightError_
                 << " of the largest slope); sample at most every "
-                << maxSpacing_*std::sqrt(samplingTolerance/heightError_) << " m along z";
+                << grid_.maxSpacing()*std::sqrt(samplingTolerance/heightError_)
+                << " m along z";
             throw std::invalid_argument(msg.str());
         }
     }
@@ -133,33 +123,25 @@ public:
 
     AxisState computeState(double z, double t) const override
     {
-        const int M = static_cast<int>(z_.size());
-        if (!(z >= z_.front() && z <= z_.back() && t >= t0_ && t <= endTime()))
+        const int M = grid_.size();
+        if (!(grid_.contains(z) && t >= t0_ && t <= endTime()))
         {
             std::ostringstream msg;
             msg << "riser::TableMotion: (z, t) = (" << z << ", " << t << ") outside the"
-                << " table's heights [" << z_.front() << ", " << z_.back() << "] m and times ["
-                << t0_ << ", " << endTime() << "] s";
+                << " table's heights [" << grid_.front() << ", " << grid_.back()
+                << "] m and times [" << t0_ << ", " << endTime() << "] s";
             throw std::out_of_range(msg.str());
         }
-        const int i = std::min
-        (
-            int(std::upper_bound(z_.begin(), z_.end(), z) - z_.begin()) - 1, M - 2
-        );
-        const double dz = z_[i + 1] - z_[i], s = (z - z_[i])/dz;
+        const HeightGrid::Piece piece = grid_.piece(z);
+        const int i = piece.i;
         const int j = std::min(int((t - t0_)/h_), N_ - 2);
         // the quintic's basis in time (per derivative, scaled by h^n to
         // act on the nodes' value, h velocity and h^2 acceleration), and
-        // the cubic's along z (h00, h10 dz, h01, h11 dz and derivatives)
+        // the cubic's along z
         double T[3][6];
         timeBasis((t - t0_)/h_ - j, T);
-        const double s2 = s*s, s3 = s2*s;
-        const double H[3][4] =
-        {
-            {2*s3 - 3*s2 + 1, (s3 - 2*s2 + s)*dz, -2*s3 + 3*s2, (s3 - s2)*dz},
-            {(6*s2 - 6*s)/dz, 3*s2 - 4*s + 1, (-6*s2 + 6*s)/dz, 3*s2 - 2*s},
-            {(12*s - 6)/(dz*dz), (6*s - 4)/dz, (-12*s + 6)/(dz*dz), (6*s - 2)/dz}
-        };
+        double H[3][4];
+        HeightGrid::basis(piece, H);
         AxisState st;
         for (int c = 0; c < 2; ++c)
         {
@@ -203,7 +185,7 @@ public:
     double axisOffsetBound(double) const override { return maxOffset_; }
     MotionDomain domain() const override
     {
-        return MotionDomain{z_.front(), z_.back(), t0_, endTime()};
+        return MotionDomain{grid_.front(), grid_.back(), t0_, endTime()};
     }
 
     bool steady() const override { return maxSpeed_ == 0.0; }
@@ -230,14 +212,16 @@ private:
     //- The nodes of one component (x or y) of the samples d
     std::vector<Node> buildNodes(const std::vector<double>& d)
     {
-        const int M = static_cast<int>(z_.size());
+        const int M = grid_.size();
         std::vector<double> slope(d.size());
         for (int j = 0; j < N_; ++j)
         {
+            const auto at = [&](int k) { return d[j*M + k]; };
             for (int i = 0; i < M; ++i)
             {
-                slope[j*M + i] = zDerivative(d, i, j);
+                slope[j*M + i] = grid_.slope(at, i);
             }
+            heightDiff_ = std::max(heightDiff_, grid_.slopeErrorEstimate(at));
         }
         std::vector<Node> nodes(d.size());
         for (int i = 0; i < M; ++i)
@@ -258,49 +242,7 @@ private:
                 timeDiff_ = std::max(timeDiff_, std::abs(nodes[j*M + i].f[2] - a2));
             }
         }
-        // along z: the slope's error (dz^2/6) x''' from the change of
-        // neighbouring second differences (x''' dz)
-        for (int j = 0; j < N_; ++j)
-        {
-            for (int i = 1; i + 2 < M; ++i)
-            {
-                const double dz = std::max(z_[i + 1] - z_[i], z_[i] - z_[i - 1]);
-                const double change = curvatureOf(d, i, j) - curvatureOf(d, i - 1, j);
-                heightDiff_ = std::max(heightDiff_, dz*std::abs(change)/6);
-            }
-        }
-        for (int i = 0; i + 1 < M; ++i)
-        {
-            maxSpacing_ = std::max(maxSpacing_, z_[i + 1] - z_[i]);
-        }
         return nodes;
-    }
-
-    //- The second difference of the samples d at time j over the heights
-    //  i, i+1, i+2 (any spacing): the curvature about z_(i+1)
-    double curvatureOf(const std::vector<double>& d, int i, int j) const
-    {
-        const int M = static_cast<int>(z_.size());
-        const double h0 = z_[i + 1] - z_[i], h1 = z_[i + 2] - z_[i + 1];
-        const double s0 = (d[j*M + i + 1] - d[j*M + i])/h0;
-        const double s1 = (d[j*M + i + 2] - d[j*M + i + 1])/h1;
-        return 2*(s1 - s0)/(h0 + h1);
-    }
-
-    //- The second-order z derivative of the samples d at node (i, j)
-    double zDerivative(const std::vector<double>& d, int i, int j) const
-    {
-        const int M = static_cast<int>(z_.size());
-        auto at = [&](int k) { return d[j*M + k]; };
-        if (M == 2) return (at(1) - at(0))/(z_[1] - z_[0]);
-        // three points k0, k0+1, k0+2 about i (one-sided at the ends):
-        // the derivative of their parabola at z_i
-        const int k0 = std::min(std::max(i - 1, 0), M - 3);
-        const double za = z_[k0], zb = z_[k0 + 1], zc = z_[k0 + 2], x = z_[i];
-        const double La = ((x - zb) + (x - zc))/((za - zb)*(za - zc));
-        const double Lb = ((x - za) + (x - zc))/((zb - za)*(zb - zc));
-        const double Lc = ((x - za) + (x - zb))/((zc - za)*(zc - zb));
-        return La*at(k0) + Lb*at(k0 + 1) + Lc*at(k0 + 2);
     }
 
     //- Value, first and second time derivative of samples d at (i, j):
@@ -308,7 +250,7 @@ private:
     //  one-sided on the five nearest samples
     void timeDerivatives(const std::vector<double>& d, int i, int j, double (&out)[3]) const
     {
-        const int M = static_cast<int>(z_.size());
+        const int M = grid_.size();
         auto at = [&](int k) { return d[k*M + i]; };
         out[0] = at(j);
         // the five-point stencil k0 .. k0+4 containing j
@@ -400,11 +342,11 @@ private:
         heightError_ = sMax > 0 ? heightDiff_/sMax : 0.0;
     }
 
-    std::vector<double> z_;
+    HeightGrid grid_;
     double t0_, h_;
     int N_;
     std::vector<Node> nodes_[2];
-    double timeDiff_ = 0, heightDiff_ = 0, maxSpacing_ = 0;
+    double timeDiff_ = 0, heightDiff_ = 0;
     double timeError_ = 0, heightError_ = 0;
     double maxOffset_ = 0, maxSpeed_ = 0, maxAcceleration_ = 0, maxSlope_ = 0;
 };

@@ -368,9 +368,74 @@ std::vector<riser::Mode> readModeList(const dictionary& dict, const word& key)
 }
 
 
+//- The tabulated mode shapes of a motion dictionary: entry shapes, rows
+//  (z phi_1 phi_2 ...) of finite numbers, as many in each
+riser::ShapesPtr readShapes(const dictionary& m)
+{
+    for (const token& t : m.lookup("shapes"))
+    {
+        if (!t.isNumber() && !t.isPunctuation())
+        {
+            FatalIOErrorInFunction(m)
+                << "entry 'shapes': a list of rows (z phi_1 phi_2 ...) of"
+                << " finite numbers, found " << t << nl << exit(FatalIOError);
+        }
+    }
+    const List<scalarList> rows = m.get<List<scalarList>>("shapes");
+    const label columns = rows.empty() ? 0 : rows[0].size();
+    std::vector<double> heights;
+    std::vector<std::vector<double>> phi(max(columns - 1, label(0)));
+    forAll(rows, i)
+    {
+        if (columns < 2 || rows[i].size() != columns)
+        {
+            FatalIOErrorInFunction(m)
+                << "entry 'shapes' row " << i + 1 << ": " << rows[i].size()
+                << " numbers; every row holds a height and a value per shape"
+                << " (z phi_1 phi_2 ...), "
+                << (columns < 2 ? "two numbers or more" : "as many as the first row")
+                << nl << exit(FatalIOError);
+        }
+        heights.push_back(rows[i][0]);
+        for (label n = 1; n < columns; ++n)
+        {
+            phi[n - 1].push_back(rows[i][n]);
+        }
+    }
+    try
+    {
+        return std::make_shared<const riser::ModeShapes>(heights, phi);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalIOErrorInFunction(m)
+            << "entry 'shapes': " << e.what() << nl << exit(FatalIOError);
+    }
+    return nullptr;
+}
+
+
 //- The modes of a motion dictionary (riserModel.H, Usage)
 riser::MotionPtr readModes(const dictionary& m)
 {
+    if (m.found("shapes"))
+    {
+        // the table's heights place the riser; its shapes stand
+        checkedEntry::allowedKeys(m, {"type", "shapes", "x", "y"});
+        try
+        {
+            return riser::ModesMotion::make
+            (
+                0, 1, riser::ModesMotion::Wave::standing,
+                readModeList(m, "x"), readModeList(m, "y"), readShapes(m)
+            );
+        }
+        catch (const std::invalid_argument& e)
+        {
+            FatalIOErrorInFunction(m)
+                << "entries 'x', 'y': " << e.what() << nl << exit(FatalIOError);
+        }
+    }
     checkedEntry::allowedKeys(m, {"type", "foot", "length", "wave", "x", "y"});
     const scalar foot = checkedEntry::inRange
     (

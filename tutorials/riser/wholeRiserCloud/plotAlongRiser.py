@@ -37,9 +37,11 @@ def motion_entry(case, name):
 
 def local_sway(case, z):
     """the amplitude of the riser's sway at heights z, and a title for the
-    motion: the modes' (in x and y), None for a table"""
+    motion: the modes' (in x and y), None for a table or tabulated shapes"""
     if motion_entry(case, "type") != "modes":
         return None, "the riser's motion table"
+    if motion_entry(case, "shapes") is not None:
+        return None, "a riser in its tabulated mode shapes"
     foot, length = float(motion_entry(case, "foot")), float(motion_entry(case, "length"))
     standing = (motion_entry(case, "wave") or "standing") == "standing"
     sway = np.zeros_like(z)
