@@ -34,7 +34,7 @@
 #ifndef RISERCORE_CARRIER_RISERFLOW_HPP
 #define RISERCORE_CARRIER_RISERFLOW_HPP
 
-#include "carrier/turbulentPipeProfile.hpp"
+#include "carrier/pipeProfile.hpp"
 #include "checks.hpp"
 #include "riser/riserMotion.hpp"
 #include "riser/sinusoidMotion.hpp"
@@ -58,9 +58,10 @@ public:
         requireNonNegative("riser::RiserFlow", "u_cm", uCentre);
     }
 
-    //- D: pipe diameter [m]; the turbulent profile of that diameter (its
-    //  centre-line speed u_cm) in place of Poiseuille's; motion: the riser's
-    RiserFlow(double D, std::shared_ptr<const TurbulentPipeProfile> profile, MotionPtr motion)
+    //- D: pipe diameter [m]; a profile of that diameter (turbulent or
+    //  tabulated, its centre-line speed u_cm) in place of Poiseuille's;
+    //  motion: the riser's
+    RiserFlow(double D, std::shared_ptr<const PipeProfile> profile, MotionPtr motion)
     :
         RiserFlow(D, profile->centreLineSpeed(), std::move(motion))
     {
@@ -68,10 +69,10 @@ public:
         {
             throw std::invalid_argument
             (
-                "riser::RiserFlow: the turbulent profile's diameter is not the riser's"
+                "riser::RiserFlow: the profile's diameter is not the riser's"
             );
         }
-        turbulent_ = std::move(profile);
+        profile_ = std::move(profile);
     }
 
     //- D, uCentre, and a sinusoid's A [m], omega [rad/s], phi0 [rad]
@@ -84,15 +85,15 @@ public:
     RiserFlow withMotion(MotionPtr motion) const
     {
         RiserFlow other(diameter(), uCentre_, std::move(motion));
-        other.turbulent_ = turbulent_;
+        other.profile_ = profile_;
         return other;
     }
 
     double diameter() const { return wall_.diameter(); }
     double radius() const { return wall_.radius(); }
     double centreLineSpeed() const { return uCentre_; }
-    //- The turbulent profile (null: Poiseuille's)
-    const TurbulentPipeProfile* turbulentProfile() const { return turbulent_.get(); }
+    //- The profile (null: Poiseuille's)
+    const PipeProfile* profile() const { return profile_.get(); }
     const RiserMotion& motion() const { return wall_.motion(); }
     const MotionPtr& motionPtr() const { return wall_.motionPtr(); }
     const CylinderWall& wall() const { return wall_; }
@@ -188,7 +189,7 @@ private:
     //- w at offset r from the axis
     double axialSpeed(const Vector& r) const
     {
-        if (turbulent_) return turbulent_->speed(r.norm());
+        if (profile_) return profile_->speed(r.norm());
         const double R = radius();
         return uCentre_*(1.0 - r.squaredNorm()/(R*R));
     }
@@ -196,10 +197,10 @@ private:
     //- The cross-section's gradient of w at offset r, grad w = w'(|r|) r/|r|
     Vector axialSpeedGradient(const Vector& r) const
     {
-        if (turbulent_)
+        if (profile_)
         {
             const double rm = r.norm();
-            return rm > 0.0 ? (turbulent_->gradient(rm)/rm)*r : Vector(Vector::Zero());
+            return rm > 0.0 ? (profile_->gradient(rm)/rm)*r : Vector(Vector::Zero());
         }
         const double R = radius();
         return (-2.0*uCentre_/(R*R))*r;
@@ -208,7 +209,7 @@ private:
     //- curl u at offset r from the axis: (dw/dy, -dw/dx, 0)
     Vector vorticityAt(const Vector& r) const
     {
-        if (turbulent_)
+        if (profile_)
         {
             const Vector g = axialSpeedGradient(r);
             return Vector(g.y(), -g.x(), 0.0);
@@ -219,7 +220,7 @@ private:
 
     CylinderWall wall_;
     double uCentre_;
-    std::shared_ptr<const TurbulentPipeProfile> turbulent_;
+    std::shared_ptr<const PipeProfile> profile_;
 };
 
 } // namespace riser

@@ -35,6 +35,7 @@
 #ifndef RISERCORE_CARRIER_TURBULENTPIPEPROFILE_HPP
 #define RISERCORE_CARRIER_TURBULENTPIPEPROFILE_HPP
 
+#include "carrier/pipeProfile.hpp"
 #include "checks.hpp"
 
 #include <cmath>
@@ -65,7 +66,7 @@ inline double colebrookFrictionFactor(double Re, double relativeRoughness)
     return 1.0/(x*x);
 }
 
-class TurbulentPipeProfile
+class TurbulentPipeProfile final : public PipeProfile
 {
 public:
     //- The log law's constants, u+ = (1/kappa) ln y+ + B (Pope, Turbulent
@@ -110,7 +111,8 @@ public:
         uCentre_ = speed(0.0);
     }
 
-    double radius() const { return R_; }
+    const char* type() const override { return "turbulent"; }
+    double radius() const override { return R_; }
     double bulkSpeed() const { return uBulk_; }
     double reynolds() const { return Re_; }
     double frictionFactor() const { return f_; }
@@ -119,7 +121,7 @@ public:
     double frictionReynolds() const { return Rplus_; }
     //- The wake's strength Pi
     double wakeStrength() const { return Pi_; }
-    double centreLineSpeed() const { return uCentre_; }
+    double centreLineSpeed() const override { return uCentre_; }
 
     //- u+ at y+ (from the wall)
     double uPlus(double yPlus) const
@@ -131,7 +133,7 @@ public:
 
     //- The axial speed w at distance r from the axis (|r| <= R; beyond,
     //  the wall's zero: the log law has no continuation)
-    double speed(double r) const
+    double speed(double r) const override
     {
         const double y = R_ - std::abs(r);
         if (y <= 0.0) return 0.0;
@@ -140,7 +142,7 @@ public:
 
     //- dw/dr at r >= 0 (<= 0 from the axis to the wall; 0 on the axis; on
     //  a smooth wall -u_tau^2/nu)
-    double gradient(double r) const
+    double gradient(double r) const override
     {
         // at and beyond the wall, the wall's value
         const double y = std::max(R_ - std::abs(r), 0.0);

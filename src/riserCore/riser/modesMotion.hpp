@@ -14,7 +14,7 @@
 // or that has bending stiffness, vibrates in shapes that are not sines; a
 // riser-dynamics code's eigen-analysis gives them as phi_n at heights
 // z_0 < ... < z_{M-1}. Mode n then takes the n-th column, joined along z as
-// riser::HeightGrid joins samples (slope continuous, curvature piecewise
+// riser::SampleGrid joins samples (slope continuous, curvature piecewise
 // linear), as a standing wave a_n phi_n(z) sin(omega_n t + phase_n); the
 // riser is known at the table's heights only (std::out_of_range beyond).
 //
@@ -45,7 +45,7 @@
 #define RISERCORE_RISER_MODESMOTION_HPP
 
 #include "checks.hpp"
-#include "riser/heightGrid.hpp"
+#include "interpolation/sampleGrid.hpp"
 #include "riser/riserMotion.hpp"
 
 #include <array>
@@ -69,7 +69,7 @@ struct Mode
 };
 
 //- Mode shapes phi_n(z) tabulated at heights (column n - 1: mode n),
-//  joined along z as riser::HeightGrid joins samples
+//  joined along z as riser::SampleGrid joins samples
 class ModeShapes
 {
 public:
@@ -128,13 +128,13 @@ public:
     }
 
     int count() const { return static_cast<int>(phi_.size()); }
-    const HeightGrid& grid() const { return grid_; }
+    const SampleGrid& grid() const { return grid_; }
 
     //- phi_n, its slope and its curvature in a piece of the grid
-    void evaluate(int n, const HeightGrid::Piece& p, double (&out)[3]) const
+    void evaluate(int n, const SampleGrid::Piece& p, double (&out)[3]) const
     {
         double H[3][4];
-        HeightGrid::basis(p, H);
+        SampleGrid::basis(p, H);
         const std::vector<double>& f = phi_[n - 1];
         const std::vector<double>& m = slope_[n - 1];
         for (int d = 0; d < 3; ++d)
@@ -147,7 +147,7 @@ public:
     double maxAbs(int n, int nz) const { return maxAbs_[n - 1][nz]; }
 
 private:
-    HeightGrid grid_;
+    SampleGrid grid_;
     std::vector<std::vector<double>> phi_, slope_;
     std::vector<std::array<double, 2>> maxAbs_;
 };
@@ -347,7 +347,7 @@ private:
                 << shapes_->grid().front() << ", " << shapes_->grid().back() << "] m";
             throw std::out_of_range(msg.str());
         }
-        const HeightGrid::Piece piece = shapes_->grid().piece(z);
+        const SampleGrid::Piece piece = shapes_->grid().piece(z);
         Derivatives d;
         for (const Mode& m : list)
         {

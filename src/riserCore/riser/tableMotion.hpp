@@ -8,7 +8,7 @@
 // differences of the samples (one-sided of the same order in the two
 // first and last intervals): position, velocity and acceleration are
 // continuous, and the interpolation error falls as h^4. Along the riser,
-// each time's samples as riser::HeightGrid joins them: cubic Hermite pieces
+// each time's samples as riser::SampleGrid joins them: cubic Hermite pieces
 // whose nodal slopes are the second-order differences of the samples
 // (three-point, for any spacing): the slope is continuous, the curvature
 // piecewise linear in z.
@@ -30,7 +30,7 @@
 #define RISERCORE_RISER_TABLEMOTION_HPP
 
 #include "checks.hpp"
-#include "riser/heightGrid.hpp"
+#include "interpolation/sampleGrid.hpp"
 #include "riser/riserMotion.hpp"
 
 #include <algorithm>
@@ -85,7 +85,7 @@ public:
                                                    std::move(x), std::move(y));
     }
 
-    const std::vector<double>& heights() const { return grid_.heights(); }
+    const std::vector<double>& heights() const { return grid_.points(); }
     double startTime() const { return t0_; }
     double endTime() const { return t0_ + h_*(N_ - 1); }
     double interval() const { return h_; }
@@ -132,7 +132,7 @@ public:
                 << "] m and times [" << t0_ << ", " << endTime() << "] s";
             throw std::out_of_range(msg.str());
         }
-        const HeightGrid::Piece piece = grid_.piece(z);
+        const SampleGrid::Piece piece = grid_.piece(z);
         const int i = piece.i;
         const int j = std::min(int((t - t0_)/h_), N_ - 2);
         // the quintic's basis in time (per derivative, scaled by h^n to
@@ -141,7 +141,7 @@ public:
         double T[3][6];
         timeBasis((t - t0_)/h_ - j, T);
         double H[3][4];
-        HeightGrid::basis(piece, H);
+        SampleGrid::basis(piece, H);
         AxisState st;
         for (int c = 0; c < 2; ++c)
         {
@@ -342,7 +342,7 @@ private:
         heightError_ = sMax > 0 ? heightDiff_/sMax : 0.0;
     }
 
-    HeightGrid grid_;
+    SampleGrid grid_;
     double t0_, h_;
     int N_;
     std::vector<Node> nodes_[2];

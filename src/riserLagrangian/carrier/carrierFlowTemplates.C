@@ -11,7 +11,9 @@ template<class CloudType>
 Foam::carrierFlow& Foam::carrierFlow::ofCloud(const CloudType& cloud)
 {
     riserModel::ofCloud(cloud);
-    return New(cloud.U());
+    carrierFlow& carrier = New(cloud.U());
+    carrier.seenMean_.schemes = cloud.solution().interpolationSchemes();
+    return carrier;
 }
 
 
@@ -85,7 +87,35 @@ Foam::vector Foam::carrierFlow::velocity
         const riser::AxisState& lab = riser_.labState(x.z(), t);
         u += (u.z() - p.U().z())*vector(lab.slope.x(), lab.slope.y(), 0);
     }
+    if (p.tTurb() > 0)
+    {
+        u += seenFluctuation(p, Uc);
+    }
     return u;
+}
+
+
+template<class ParcelType>
+Foam::vector Foam::carrierFlow::seenFluctuation
+(
+    const ParcelType& p,
+    const vector& Uc
+) const
+{
+    seenMean& m = seenMean_;
+    if (!m.interp || m.timeIndex != mesh_.time().timeIndex())
+    {
+        if (m.schemes.empty())
+        {
+            FatalErrorInFunction
+                << "the exact carrier of " << U_.name() << " under a dispersion"
+                << " model needs the cloud's interpolation schemes"
+                << " (carrierFlow::ofCloud)" << abort(FatalError);
+        }
+        m.interp.reset(interpolation<vector>::New(m.schemes, U_).ptr());
+        m.timeIndex = mesh_.time().timeIndex();
+    }
+    return Uc - m.interp->interpolate(p.coordinates(), p.currentTetIndices());
 }
 
 

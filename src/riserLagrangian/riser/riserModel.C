@@ -13,6 +13,8 @@
 #include "riser/harmonicsMotion.hpp"
 #include "riser/modesMotion.hpp"
 #include "riser/tableMotion.hpp"
+#include "carrier/tabulatedPipeProfile.hpp"
+#include "carrier/turbulentPipeProfile.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -257,8 +259,9 @@ riser::MotionPtr readSinusoid(const dictionary& dict)
 
 
 //- The rows of the list entry key of dict (empty without it), each of N
-//  finite numbers within [lo, hi]: a rowName (harmonic, mode) of the
-//  form rowForm, its fields named by names (for the messages)
+//  finite numbers within [lo, hi]: a rowName (harmonic, mode, row) of the
+//  form rowForm, its fields named by names, the rows counted from first
+//  (for the messages)
 template<int N>
 List<FixedList<scalar, N>> readRows
 (
@@ -268,7 +271,8 @@ List<FixedList<scalar, N>> readRows
     const char* rowForm,
     const char* const (&names)[N],
     const scalar (&lo)[N],
-    const scalar (&hi)[N]
+    const scalar (&hi)[N],
+    const label first = 0
 )
 {
     if (!dict.found(key))
@@ -296,7 +300,7 @@ List<FixedList<scalar, N>> readRows
             if (!(std::isfinite(v) && v >= lo[k] && v <= hi[k]))
             {
                 FatalIOErrorInFunction(dict)
-                    << "entry '" << key << "' " << rowName << " " << i
+                    << "entry '" << key << "' " << rowName << " " << i + first
                     << ": " << names[k] << " = " << v
                     << " outside the allowed range [" << lo[k] << ", "
                     << hi[k] << "]" << nl << exit(FatalIOError);
@@ -769,6 +773,61 @@ scalar readViscosity(const dictionary& dict, const char* required = nullptr)
     );
 }
 
+//- The tabulated profile of riserProperties dict's entry profileFile, of a
+//  pipe of radius R: rows (r w k nu_t), as riserCarrierProfile writes them
+std::shared_ptr<const riser::TabulatedPipeProfile> readProfileFile
+(
+    const dictionary& dict,
+    const scalar R
+)
+{
+    checkedEntry::checkFound
+    (
+        dict, "profileFile", "the file of the samples (riserCarrierProfile's)"
+    );
+    fileName file(dict.get<fileName>("profileFile"));
+    file.expand();
+    if (!file.isAbsolute())
+    {
+        // relative to the case: the folder holding constant/
+        file = dict.topDict().name().path().path()/file;
+    }
+    IFstream is(file);
+    if (!is.good())
+    {
+        FatalIOErrorInFunction(dict)
+            << "entry 'profileFile': cannot read " << file << nl
+            << exit(FatalIOError);
+    }
+    const dictionary samples(is);
+    checkedEntry::allowedKeys(samples, {"FoamFile", "rows"});
+    const List<FixedList<scalar, 4>> rows =
+        readRows<4>
+        (
+            samples, "rows", "row", "(r [m] w [m/s] k [m^2/s^2] nu_t [m^2/s])",
+            {"r", "w", "k", "nu_t"},
+            {0, -rm::maxSpeed, 0, 0}, {R*(1 + 1e-6), rm::maxSpeed, 1e4, 1e2}, 1
+        );
+    std::vector<double> r, w, k, nut;
+    for (const FixedList<scalar, 4>& row : rows)
+    {
+        r.push_back(row[0]);
+        w.push_back(row[1]);
+        k.push_back(row[2]);
+        nut.push_back(row[3]);
+    }
+    try
+    {
+        return std::make_shared<const riser::TabulatedPipeProfile>(R, r, w, k, nut);
+    }
+    catch (const std::invalid_argument& e)
+    {
+        FatalIOErrorInFunction(samples)
+            << "entry 'rows': " << e.what() << nl << exit(FatalIOError);
+    }
+    return nullptr;
+}
+
 } // End anonymous namespace
 } // End namespace Foam
 
@@ -779,7 +838,7 @@ void Foam::riserModel::noteLaminarCarrier
     const riser::RiserFlow& flow
 )
 {
-    const scalar nu = flow.turbulentProfile() ? -1 : readViscosity(dict);
+    const scalar nu = flow.profile() ? -1 : readViscosity(dict);
     if (nu <= 0)
     {
         return;
@@ -807,39 +866,59 @@ riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
         dict,
         {
             "D", "uCentre", "A", "f", "omega", "phi0", "frame", "carrier",
-            "drive", "motion", "profile", "uBulk", "roughness"
+            "drive", "motion", "profile", "uBulk", "roughness", "profileFile"
         }
     );
     const scalar D =
         dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
-    const bool turbulent =
+    enum class profileType { laminar, turbulent, tabulated };
+    const profileType profile =
         dict.found("profile")
-     && checkedEntry::choice<bool>
+      ? checkedEntry::choice<profileType>
         (
-            dict, "profile", {{"laminar", false}, {"turbulent", true}}
-        );
-    // each profile's own entries, and none of the other's
-    for (const char* key : {"uCentre", "uBulk", "roughness"})
+            dict, "profile",
+            {
+                {"laminar", profileType::laminar},
+                {"turbulent", profileType::turbulent},
+                {"tabulated", profileType::tabulated}
+            }
+        )
+      : profileType::laminar;
+    // each profile's own entries, and none of another's
+    const std::pair<const char*, profileType> owners[] =
     {
-        const bool own = turbulent == (word(key) != "uCentre");
-        if (!own && dict.found(key))
+        {"uCentre", profileType::laminar},
+        {"uBulk", profileType::turbulent},
+        {"roughness", profileType::turbulent},
+        {"profileFile", profileType::tabulated}
+    };
+    const char* const takes[] =
+    {
+        "laminar (Poiseuille) profile takes its centre-line speed uCentre",
+        "turbulent profile takes the bulk speed uBulk (its centre-line speed"
+        " follows from it)",
+        "tabulated profile takes its samples from profileFile (its speeds"
+        " are the file's)"
+    };
+    for (const auto& owner : owners)
+    {
+        if (owner.second != profile && dict.found(owner.first))
         {
             FatalIOErrorInFunction(dict)
-                << "entry '" << key << "' with profile "
-                << (turbulent ? "turbulent" : "laminar") << ": the "
-                << (turbulent
-                  ? "turbulent profile takes the bulk speed uBulk (its centre-line"
-                    " speed follows from it)"
-                  : "laminar (Poiseuille) profile takes its centre-line speed"
-                    " uCentre")
-                << nl << exit(FatalIOError);
+                << "entry '" << owner.first << "' with profile "
+                << dict.getOrDefault<word>("profile", "laminar") << ": the "
+                << takes[int(profile)] << nl << exit(FatalIOError);
         }
     }
-    if (!turbulent)
+    if (profile == profileType::laminar)
     {
         const scalar uCentre =
             dimensionedInRange(dict, "uCentre", dimVelocity, 0, true, maxSpeed, true);
         return riser::RiserFlow(D, uCentre, readMotion(dict));
+    }
+    if (profile == profileType::tabulated)
+    {
+        return riser::RiserFlow(D, readProfileFile(dict, 0.5*D), readMotion(dict));
     }
     const scalar uBulk =
         dimensionedInRange(dict, "uBulk", dimVelocity, 0, false, maxSpeed, true);

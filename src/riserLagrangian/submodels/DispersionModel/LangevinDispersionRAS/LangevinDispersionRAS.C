@@ -9,6 +9,8 @@
 #include "dispersion/langevinSeenVelocity.hpp"
 #include "turbulenceModel.H"
 #include "fvcGrad.H"
+#include "riserModel.H"
+#include "carrier/tabulatedPipeProfile.hpp"
 
 // * * * * * * * * * * * * * * * * Constructors  * * * * * * * * * * * * * * //
 
@@ -68,16 +70,25 @@ void Foam::LangevinDispersionRAS<CloudType>::cache()
     const turbulenceModel* turbulence = mesh.findObject<turbulenceModel>(name);
     if (!turbulence || turbulence->get<word>("simulationType") == "laminar")
     {
-        FatalIOErrorInFunction(this->owner().subModelProperties())
-            << "entry 'dispersionModel' = " << typeName << " in the cloud "
-            << this->owner().name() << " needs the carrier's turbulence"
-            << " (k and nut of a RAS model, constant/" << name << "): "
-            << (turbulence ? "the carrier is laminar" : "this solver has no"
-                " turbulence model (riserParcelFoam's analytic carrier is"
-                " laminar)")
-            << ". Use 'dispersionModel none;', or a RAS carrier"
-            << " (riserCoupledFoam, DPMFoam, MPPICFoam,"
-            << " uncoupledKinematicParcelFoam)" << nl << exit(FatalIOError);
+        const riser::TabulatedPipeProfile* profile = tabulatedProfile();
+        if (!profile)
+        {
+            FatalIOErrorInFunction(this->owner().subModelProperties())
+                << "entry 'dispersionModel' = " << typeName << " in the cloud "
+                << this->owner().name() << " needs the carrier's turbulence"
+                << " (k and nut of a RAS model, constant/" << name << ", or of"
+                << " the analytic carrier's profile tabulated,"
+                << " constant/riserProperties): "
+                << (turbulence ? "the carrier is laminar" : "this solver has no"
+                    " turbulence model, and the riser's carrier no tabulated"
+                    " profile")
+                << ". Use 'dispersionModel none;', a RAS carrier"
+                << " (riserCoupledFoam, DPMFoam, MPPICFoam,"
+                << " uncoupledKinematicParcelFoam) or profile tabulated"
+                << nl << exit(FatalIOError);
+        }
+        cacheProfile(*profile);
+        return;
     }
 
     const tmp<volScalarField> tk(turbulence->k());
@@ -94,6 +105,76 @@ void Foam::LangevinDispersionRAS<CloudType>::cache()
         new volVectorField("langevinGradSigma", fvc::grad(sigma_()))
     );
     nut_.reset(new volScalarField("langevinNut", turbulence->nut()));
+}
+
+
+template<class CloudType>
+const riser::TabulatedPipeProfile*
+Foam::LangevinDispersionRAS<CloudType>::tabulatedProfile() const
+{
+    const riserModel& riser = riserModel::New(this->owner().mesh());
+    if (!riser.found())
+    {
+        return nullptr;
+    }
+    return dynamic_cast<const riser::TabulatedPipeProfile*>(riser.flow().profile());
+}
+
+
+template<class CloudType>
+void Foam::LangevinDispersionRAS<CloudType>::cacheProfile
+(
+    const riser::TabulatedPipeProfile& profile
+)
+{
+    const fvMesh& mesh = this->owner().mesh();
+    const riser::RiserFlow& flow = riserModel::New(mesh).flow();
+    const scalar t = mesh.time().value();
+    auto newField = [&](const word& field, const dimensionSet& dims)
+    {
+        return new volScalarField
+        (
+            IOobject
+            (
+                field, mesh.time().timeName(), mesh,
+                IOobject::NO_READ, IOobject::NO_WRITE, false
+            ),
+            mesh,
+            dimensionedScalar("zero", dims, 0)
+        );
+    };
+    sigma_.reset(newField("langevinSigma", dimVelocity));
+    nut_.reset(newField("langevinNut", dimViscosity));
+    // sigma and nu_t at a point's distance from the axis
+    auto set = [&](const point& x, scalar& sigma, scalar& nut)
+    {
+        const scalar r = mag(fromCore(flow.motion().radialOffset(toCore(x), t)));
+        sigma = Foam::sqrt(2.0/3.0*profile.turbulentEnergy(r));
+        nut = profile.eddyViscosity(r);
+    };
+    forAll(mesh.C(), celli)
+    {
+        set(mesh.C()[celli], sigma_()[celli], nut_()[celli]);
+    }
+    forAll(mesh.boundary(), patchi)
+    {
+        fvPatchScalarField& sp = sigma_->boundaryFieldRef()[patchi];
+        fvPatchScalarField& np = nut_->boundaryFieldRef()[patchi];
+        if (sp.coupled())
+        {
+            continue;
+        }
+        forAll(sp, facei)
+        {
+            set(mesh.Cf().boundaryField()[patchi][facei], sp[facei], np[facei]);
+        }
+    }
+    sigma_->correctBoundaryConditions();
+    nut_->correctBoundaryConditions();
+    gradSigma_.reset
+    (
+        new volVectorField("langevinGradSigma", fvc::grad(sigma_()))
+    );
 }
 
 

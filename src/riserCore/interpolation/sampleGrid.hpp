@@ -1,9 +1,10 @@
-// riserCore: samples along the riser at heights z_0 < ... < z_{M-1} (any
+// riserCore: samples at points z_0 < ... < z_{M-1} of a coordinate (any
 // spacing), joined by cubic Hermite pieces whose nodal slopes are the
 // second-order (three-point) differences of the samples: the slope is
-// continuous, the curvature piecewise linear in z (doc/theory.md section
-// 2.6). The tabulated riser motion (riser::TableMotion) and the tabulated
-// mode shapes (riser::ModesMotion) interpolate along z so.
+// continuous, the second derivative piecewise linear (doc/theory.md
+// section 2.6). The tabulated riser motion (riser::TableMotion) and mode
+// shapes (riser::ModeShapes) join their samples along the riser so, the
+// tabulated pipe profile (riser::TabulatedPipeProfile) across the pipe.
 //
 // The samples are any indexable sequence at(k), k = 0 .. M-1 (a column of
 // a table, one time of a motion table). Sampling: the nodal slopes' error
@@ -12,8 +13,8 @@
 // table whose estimate exceeds their tolerance of the largest slope.
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
-#ifndef RISERCORE_RISER_HEIGHTGRID_HPP
-#define RISERCORE_RISER_HEIGHTGRID_HPP
+#ifndef RISERCORE_INTERPOLATION_SAMPLEGRID_HPP
+#define RISERCORE_INTERPOLATION_SAMPLEGRID_HPP
 
 #include "checks.hpp"
 
@@ -26,10 +27,10 @@
 
 namespace riser {
 
-class HeightGrid
+class SampleGrid
 {
 public:
-    //- The piece holding a height: heights i, i+1, its length dz and the
+    //- The piece holding a point: points i, i+1, its length dz and the
     //  fraction s of it
     struct Piece
     {
@@ -37,22 +38,22 @@ public:
         double dz, s;
     };
 
-    //- heights (M >= 2, increasing, finite); law names the caller in its
+    //- points (M >= 2, increasing, finite); law names the caller in its
     //  std::invalid_argument
-    HeightGrid(std::vector<double> heights, const char* law)
+    SampleGrid(std::vector<double> points, const char* law)
     :
-        z_(std::move(heights))
+        z_(std::move(points))
     {
         const int M = size();
-        requireInRange(law, "number of heights", M, 2, Bound::closed, HUGE_VAL, Bound::open);
+        requireInRange(law, "number of points", M, 2, Bound::closed, HUGE_VAL, Bound::open);
         for (int i = 0; i < M; ++i)
         {
-            requireInRange(law, "height", z_[i], -HUGE_VAL, Bound::open, HUGE_VAL, Bound::open);
+            requireInRange(law, "point", z_[i], -HUGE_VAL, Bound::open, HUGE_VAL, Bound::open);
             if (i > 0 && !(z_[i] > z_[i - 1]))
             {
                 throw std::invalid_argument
                 (
-                    std::string(law) + ": the heights must increase (height "
+                    std::string(law) + ": the points must increase (point "
                   + std::to_string(i) + ")"
                 );
             }
@@ -64,13 +65,13 @@ public:
     }
 
     int size() const { return static_cast<int>(z_.size()); }
-    const std::vector<double>& heights() const { return z_; }
+    const std::vector<double>& points() const { return z_; }
     double front() const { return z_.front(); }
     double back() const { return z_.back(); }
     double maxSpacing() const { return maxSpacing_; }
     bool contains(double z) const { return z >= z_.front() && z <= z_.back(); }
 
-    //- The piece of a height within the grid (the last one at its top)
+    //- The piece of a point within the grid (the last one at its end)
     Piece piece(double z) const
     {
         const int M = size();
@@ -97,9 +98,9 @@ public:
         std::copy(&B[0][0], &B[0][0] + 12, &H[0][0]);
     }
 
-    //- The nodal slope at height i of the samples at(k): the derivative
+    //- The nodal slope at point i of the samples at(k): the derivative
     //  of the parabola through three neighbouring samples (one-sided at
-    //  the ends; the chord of two heights)
+    //  the ends; the chord of two points)
     template<class Samples>
     double slope(const Samples& at, int i) const
     {
@@ -129,8 +130,8 @@ public:
     }
 
 private:
-    //- The second difference of at over the heights i, i+1, i+2: the
-    //  curvature about z_(i+1)
+    //- The second difference of at over the points i, i+1, i+2: the
+    //  second derivative about z_(i+1)
     template<class Samples>
     double curvature(const Samples& at, int i) const
     {
