@@ -2,11 +2,16 @@
 // than Poiseuille's (riser::RiserFlow's own): the turbulent closed form
 // (riser::TurbulentPipeProfile) or samples of a precursor run
 // (riser::TabulatedPipeProfile). The carrier asks for the speed and its
-// radial gradient at a distance r from the axis.
+// radial gradient at a distance r from the axis; the forces of one
+// evaluation of a particle ask at one r in turn, so both are computed
+// together and the last r's kept (a cache: not for use from several
+// threads at once).
 //
 // SPDX-License-Identifier: GPL-3.0-or-later
 #ifndef RISERCORE_CARRIER_PIPEPROFILE_HPP
 #define RISERCORE_CARRIER_PIPEPROFILE_HPP
+
+#include <cmath>
 
 namespace riser {
 
@@ -22,9 +27,32 @@ public:
     //- w on the axis [m/s]
     virtual double centreLineSpeed() const = 0;
     //- w at distance r from the axis [m/s]
-    virtual double speed(double r) const = 0;
+    double speed(double r) const { return at(r).speed; }
     //- dw/dr at distance r from the axis [1/s]
-    virtual double gradient(double r) const = 0;
+    double gradient(double r) const { return at(r).gradient; }
+
+protected:
+    struct Values
+    {
+        double speed, gradient;
+    };
+
+    //- w and dw/dr at distance r from the axis
+    virtual Values compute(double r) const = 0;
+
+private:
+    const Values& at(double r) const
+    {
+        if (!(r == lastR_))
+        {
+            last_ = compute(r);
+            lastR_ = r;
+        }
+        return last_;
+    }
+
+    mutable double lastR_ = NAN;
+    mutable Values last_ = {0, 0};
 };
 
 } // namespace riser

@@ -63,12 +63,17 @@ public:
     const char* type() const override { return "tabulated"; }
     double radius() const override { return R_; }
     double centreLineSpeed() const override { return w_.value[mid()]; }
-    double speed(double r) const override { return w_.at(grid_, clamp(r), 0); }
-    double gradient(double r) const override { return w_.at(grid_, clamp(r), 1); }
     //- The turbulent kinetic energy k at distance r from the axis
     double turbulentEnergy(double r) const { return std::max(k_.at(grid_, clamp(r), 0), 0.0); }
     //- The eddy viscosity nu_t at distance r from the axis
     double eddyViscosity(double r) const { return std::max(nut_.at(grid_, clamp(r), 0), 0.0); }
+
+protected:
+    Values compute(double r) const override
+    {
+        const double x = clamp(r);
+        return {w_.at(grid_, x, 0), w_.at(grid_, x, 1)};
+    }
 
 private:
     //- One quantity's samples on the mirrored grid and their nodal slopes

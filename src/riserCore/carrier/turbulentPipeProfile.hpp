@@ -108,7 +108,7 @@ public:
             }
         );
         Pi_ = (uBulk_/uTau_ - I0)/I1;
-        uCentre_ = speed(0.0);
+        uCentre_ = speedAt(0.0);
     }
 
     const char* type() const override { return "turbulent"; }
@@ -131,9 +131,13 @@ public:
         return basePlus(yPlus) + 2.0*Pi_/kappa*s*s;
     }
 
+protected:
+    Values compute(double r) const override { return {speedAt(r), gradientAt(r)}; }
+
+private:
     //- The axial speed w at distance r from the axis (|r| <= R; beyond,
     //  the wall's zero: the log law has no continuation)
-    double speed(double r) const override
+    double speedAt(double r) const
     {
         const double y = R_ - std::abs(r);
         if (y <= 0.0) return 0.0;
@@ -142,7 +146,7 @@ public:
 
     //- dw/dr at r >= 0 (<= 0 from the axis to the wall; 0 on the axis; on
     //  a smooth wall -u_tau^2/nu)
-    double gradient(double r) const override
+    double gradientAt(double r) const
     {
         // at and beyond the wall, the wall's value
         const double y = std::max(R_ - std::abs(r), 0.0);
@@ -155,7 +159,6 @@ public:
         return -uTau_*uTau_/nu_*dPlus;
     }
 
-private:
     //- Reichardt's law less the ramped roughness shift, at y+
     double innerPlus(double yp) const
     {

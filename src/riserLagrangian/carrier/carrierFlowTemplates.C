@@ -103,7 +103,12 @@ Foam::vector Foam::carrierFlow::seenFluctuation
 ) const
 {
     seenMean& m = seenMean_;
-    if (!m.interp || m.timeIndex != mesh_.time().timeIndex())
+    if
+    (
+        !m.interp
+     || m.eventNo != U_.eventNo()
+     || (mesh_.moving() && m.timeIndex != mesh_.time().timeIndex())
+    )
     {
         if (m.schemes.empty())
         {
@@ -113,9 +118,14 @@ Foam::vector Foam::carrierFlow::seenFluctuation
                 << " (carrierFlow::ofCloud)" << abort(FatalError);
         }
         m.interp.reset(interpolation<vector>::New(m.schemes, U_).ptr());
+        m.eventNo = U_.eventNo();
         m.timeIndex = mesh_.time().timeIndex();
     }
-    return Uc - m.interp->interpolate(p.coordinates(), p.currentTetIndices());
+    if (!m.key.matchOrTake(p, mesh_.time().timeIndex()))
+    {
+        m.mean = m.interp->interpolate(p.coordinates(), p.currentTetIndices());
+    }
+    return Uc - m.mean;
 }
 
 

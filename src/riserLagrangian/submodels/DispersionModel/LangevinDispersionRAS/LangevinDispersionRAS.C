@@ -57,6 +57,10 @@ const Foam::dictionary& Foam::LangevinDispersionRAS<CloudType>::coeffs
 template<class CloudType>
 void Foam::LangevinDispersionRAS<CloudType>::cache()
 {
+    if (keepProfileFields_ && sigma_.valid())
+    {
+        return;
+    }
     // The carrier's turbulence model, looked up at the first step (the
     // coupled solvers build it after the cloud)
     const fvMesh& mesh = this->owner().mesh();
@@ -175,6 +179,7 @@ void Foam::LangevinDispersionRAS<CloudType>::cacheProfile
     (
         new volVectorField("langevinGradSigma", fvc::grad(sigma_()))
     );
+    keepProfileFields_ = !mesh.moving();
 }
 
 
@@ -198,7 +203,7 @@ void Foam::LangevinDispersionRAS<CloudType>::cacheFields(const bool store)
     {
         cache();
     }
-    else
+    else if (!keepProfileFields_)
     {
         sigma_.clear();
         gradSigma_.clear();

@@ -1,0 +1,106 @@
+"""The carrier profiles' cost in riserParcelFoam per particle-step, as ratios
+to the laminar carrier's measured in the same round (see Allrun).
+
+usage: carrierCost.py <work folder> [end time [s], default 0.3] [rounds, default 3]
+
+The carriers, each of the bulk speed 1 m/s in the 0.1 m riser (Re 1e5):
+  laminar:    Poiseuille flow, uCentre 2 m/s;
+  turbulent:  the closed-form turbulent profile (profile turbulent);
+  tabulated:  that profile sampled at 21 radii (profile tabulated, k and
+              nu_t of the order of a RAS run's: 0.004 m^2/s^2, 2e-4 m^2/s);
+  dispersed:  the tabulated one with dispersionModel langevinDispersionRAS.
+The ores are filled at rest relative to each carrier, so the scenes differ
+in their motion but not in their number: the ratio per particle-step is
+the carrier's cost (with the contacts the different motions bring). The
+cost is the solver's execution time from its first step to its last over
+the sum of the particles in the cloud at each step."""
+import os
+import re
+import shutil
+import statistics
+import sys
+
+from riserfoam.cli import help_requested  # noqa: E402
+
+help_requested(__doc__)
+
+from riserfoam import cases, foamfields as ff, pipeflow
+
+work = os.path.abspath(sys.argv[1])
+END = float(sys.argv[2]) if len(sys.argv) > 2 else 0.3
+ROUNDS = int(sys.argv[3]) if len(sys.argv) > 3 else 3
+D, UB, NU = 0.1, 1.0, 1e-6
+CARRIERS = {
+    "laminar": "profile laminar; uCentre %r;" % (2 * UB),
+    "turbulent": "profile turbulent; uBulk %r;" % UB,
+    "tabulated": 'profile tabulated; profileFile "constant/riserCarrierProfile";',
+    "dispersed": 'profile tabulated; profileFile "constant/riserCarrierProfile";',
+}
+
+
+def write_profile(case):
+    w = pipeflow.turbulent_profile(UB, D, NU)
+    rows = []
+    for i in range(21):
+        r = 0.5 * D * i / 20
+        rows.append("    (%r %r %r %r)" % (r, float(w(r)), 0.004 * (1 - 0.5 * (2 * r / D) ** 2),
+                                          2e-4 * (1 - (2 * r / D) ** 2)))
+    ff.write_dictionary(os.path.join(case, "constant/riserCarrierProfile"),
+                        "rows\n(\n%s\n);\n" % "\n".join(rows))
+
+
+def make(name):
+    case = os.path.join(work, name)
+    cases.copy_tutorial("riser/oreTransport", case)
+    riser = os.path.join(case, "constant/riserProperties")
+    ff.remove_entry(riser, "uCentre")
+    with open(riser, "a") as out:
+        out.write(CARRIERS[name] + "\n")
+    cloud = os.path.join(case, "constant/kinematicCloudProperties")
+    ff.set_nested(cloud, "subModels/injectionModels/ores/solidsFraction", "0.01")
+    ff.set_nested(cloud, "cloudFunctions", "{}")
+    if name == "dispersed":
+        ff.set_nested(cloud, "subModels/dispersionModel", "langevinDispersionRAS")
+    control = os.path.join(case, "system/controlDict")
+    ff.set_entry(control, "endTime", repr(END))
+    ff.set_entry(control, "writeInterval", repr(END))
+    cases.riser_mesh(case, D, 1.0, 8, ends="cyclic")
+    if name in ("tabulated", "dispersed"):
+        write_profile(case)
+    return case
+
+
+def run(case):
+    """seconds from the first step to the last, particle-steps, parcels"""
+    for folder in os.listdir(case):
+        if re.fullmatch(r"[0-9.e+-]+", folder) and float(folder) > 0:
+            shutil.rmtree(os.path.join(case, folder))
+    log = cases.run(["riserParcelFoam", "-case", case], os.path.join(case, "log.riserParcelFoam"))
+    times = [float(x) for x in re.findall(r"^ExecutionTime = (\S+) s", log, re.M)]
+    counts = [int(x) for x in re.findall(r"Current number of parcels\s+= (\d+)", log)]
+    return times[-1] - times[0], sum(counts[1:]), counts[-1]
+
+
+folders = {name: make(name) for name in CARRIERS}
+ratios = {name: [] for name in CARRIERS}
+parcels = {}
+for round_ in range(ROUNDS):
+    perStep = {}
+    for name in CARRIERS:
+        seconds, particleSteps, parcels[name] = run(folders[name])
+        perStep[name] = seconds / particleSteps
+    for name in CARRIERS:
+        ratios[name].append(perStep[name] / perStep["laminar"])
+    print("round %d: per particle-step %s" % (round_, ", ".join(
+        "%s %.3g us" % (k, 1e6 * v) for k, v in perStep.items())), flush=True)
+os.makedirs("results", exist_ok=True)
+with open("results/carrierCost.dat", "w") as out:
+    out.write("# riserParcelFoam, a 1 m periodic section of D = 0.1 m at C_v = 0.01, %g s:"
+              " execution time per particle-step as ratios to the laminar carrier's of the"
+              " same round (%d rounds)\n"
+              "# carrier parcels_at_end per_particle_step(median min max)\n" % (END, ROUNDS))
+    for name in CARRIERS:
+        r = ratios[name]
+        out.write("%s %d %.3f %.3f %.3f\n"
+                  % (name, parcels[name], statistics.median(r), min(r), max(r)))
+print(open("results/carrierCost.dat").read())
