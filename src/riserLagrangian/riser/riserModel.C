@@ -69,7 +69,7 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
 
     if (io.typeHeaderOk<IOdictionary>(true))
     {
-        dict_ = IOdictionary(io);
+        dict_ = readProperties(mesh_.time());
         lab_.reset(new riser::RiserFlow(read(dict_)));
         noteLaminarCarrier(dict_, *lab_);
         if (dict_.found("frame"))
@@ -154,6 +154,30 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
 
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
+
+Foam::dictionary Foam::riserModel::readProperties(const Time& time)
+{
+    dictionary dict
+    (
+        IOdictionary
+        (
+            IOobject
+            (
+                "riserProperties",
+                time.constant(),
+                time,
+                IOobject::MUST_READ,
+                IOobject::NO_WRITE,
+                false
+            )
+        )
+    );
+    // a global file: in a parallel run the processors other than the master
+    // receive its entries without its name
+    dict.name() = time.globalPath()/time.constant()/"riserProperties";
+    return dict;
+}
+
 
 const Foam::riserModel& Foam::riserModel::New(const polyMesh& mesh)
 {

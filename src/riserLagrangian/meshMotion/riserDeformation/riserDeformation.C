@@ -28,18 +28,7 @@ Foam::riserDeformation::riserDeformation
 :
     points0MotionSolver(mesh, dict, typeName)
 {
-    const IOdictionary riserDict
-    (
-        IOobject
-        (
-            "riserProperties",
-            mesh.time().constant(),
-            mesh.time(),
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const dictionary riserDict(riserModel::readProperties(mesh.time()));
     motion_ = riserModel::read(riserDict).motionPtr();
     // curPoints asks for the axis at t = 0 and at the run's times
     const boundBox bb(points0_, true);

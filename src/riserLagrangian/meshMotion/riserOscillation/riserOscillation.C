@@ -5,7 +5,6 @@
 
 #include "riserOscillation.H"
 #include "riserModel.H"
-#include "IOdictionary.H"
 #include "addToRunTimeSelectionTable.H"
 
 // * * * * * * * * * * * * * * Static Data Members * * * * * * * * * * * * * //
@@ -58,18 +57,7 @@ bool Foam::solidBodyMotionFunctions::riserOscillation::read
 )
 {
     solidBodyMotionFunction::read(SBMFCoeffs);
-    const IOdictionary riserDict
-    (
-        IOobject
-        (
-            "riserProperties",
-            time_.constant(),
-            time_,
-            IOobject::MUST_READ,
-            IOobject::NO_WRITE,
-            false
-        )
-    );
+    const dictionary riserDict(riserModel::readProperties(time_));
     motion_ = riserModel::read(riserDict).motionPtr();
     if (!motion_->uniformAlongAxis())
     {
