@@ -41,7 +41,7 @@ public:
                          const std::vector<double>& k, const std::vector<double>& nut)
     :
         R_(R),
-        grid_(mirrored(R, r), "riser::TabulatedPipeProfile")
+        grid_(mirrored(R, r), "riser::TabulatedPipeProfile", "radius")
     {
         const char* law = "riser::TabulatedPipeProfile";
         const std::size_t M = r.size();

@@ -38,23 +38,24 @@ public:
         double dz, s;
     };
 
-    //- points (M >= 2, increasing, finite); law names the caller in its
-    //  std::invalid_argument
-    SampleGrid(std::vector<double> points, const char* law)
+    //- points (M >= 2, increasing, finite); law names the caller and
+    //  point the coordinate (height, radius) in its std::invalid_argument
+    SampleGrid(std::vector<double> points, const char* law, const std::string& point)
     :
         z_(std::move(points))
     {
         const int M = size();
-        requireInRange(law, "number of points", M, 2, Bound::closed, HUGE_VAL, Bound::open);
+        requireInRange(law, "number of samples", M, 2, Bound::closed, HUGE_VAL, Bound::open);
         for (int i = 0; i < M; ++i)
         {
-            requireInRange(law, "point", z_[i], -HUGE_VAL, Bound::open, HUGE_VAL, Bound::open);
+            requireInRange(law, point.c_str(), z_[i], -HUGE_VAL, Bound::open, HUGE_VAL,
+                           Bound::open);
             if (i > 0 && !(z_[i] > z_[i - 1]))
             {
                 throw std::invalid_argument
                 (
-                    std::string(law) + ": the points must increase (point "
-                  + std::to_string(i) + ")"
+                    std::string(law) + ": the samples' " + point + " must increase ("
+                  + point + " " + std::to_string(i) + ")"
                 );
             }
         }

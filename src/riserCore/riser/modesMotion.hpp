@@ -81,7 +81,7 @@ public:
     //  too coarse for a shape (naming the spacing needed)
     ModeShapes(std::vector<double> heights, std::vector<std::vector<double>> columns)
     :
-        grid_(std::move(heights), "riser::ModeShapes"), phi_(std::move(columns))
+        grid_(std::move(heights), "riser::ModeShapes", "height"), phi_(std::move(columns))
     {
         const char* law = "riser::ModeShapes";
         requireInRange(law, "number of shapes", double(phi_.size()), 1.0, Bound::closed,

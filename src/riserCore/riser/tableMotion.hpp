@@ -54,7 +54,7 @@ public:
     TableMotion(std::vector<double> heights, double t0, double h, int N,
                 std::vector<double> x, std::vector<double> y)
     :
-        grid_(std::move(heights), "riser::TableMotion"), t0_(t0), h_(h), N_(N)
+        grid_(std::move(heights), "riser::TableMotion", "height"), t0_(t0), h_(h), N_(N)
     {
         const char* law = "riser::TableMotion";
         const int M = grid_.size();

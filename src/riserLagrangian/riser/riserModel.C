@@ -69,7 +69,7 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
 
     if (io.typeHeaderOk<IOdictionary>(true))
     {
-        dict_ = readProperties(mesh_.time());
+        dict_ = readProperties(mesh_.time())();
         lab_.reset(new riser::RiserFlow(read(dict_)));
         noteLaminarCarrier(dict_, *lab_);
         if (dict_.found("frame"))
@@ -155,11 +155,14 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
 
 // * * * * * * * * * * * * * * * * Selectors * * * * * * * * * * * * * * * * //
 
-Foam::dictionary Foam::riserModel::readProperties(const Time& time)
+Foam::autoPtr<Foam::IOdictionary> Foam::riserModel::readProperties
+(
+    const Time& time
+)
 {
-    dictionary dict
+    autoPtr<IOdictionary> dict
     (
-        IOdictionary
+        new IOdictionary
         (
             IOobject
             (
@@ -174,7 +177,7 @@ Foam::dictionary Foam::riserModel::readProperties(const Time& time)
     );
     // a global file: in a parallel run the processors other than the master
     // receive its entries without its name
-    dict.name() = time.globalPath()/time.constant()/"riserProperties";
+    dict->dictionary::name() = time.globalPath()/time.constant()/"riserProperties";
     return dict;
 }
 

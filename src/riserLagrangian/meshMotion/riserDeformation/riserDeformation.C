@@ -28,7 +28,8 @@ Foam::riserDeformation::riserDeformation
 :
     points0MotionSolver(mesh, dict, typeName)
 {
-    const dictionary riserDict(riserModel::readProperties(mesh.time()));
+    const autoPtr<IOdictionary> riserProperties(riserModel::readProperties(mesh.time()));
+    const dictionary& riserDict = riserProperties();
     motion_ = riserModel::read(riserDict).motionPtr();
     // curPoints asks for the axis at t = 0 and at the run's times
     const boundBox bb(points0_, true);

@@ -57,7 +57,8 @@ bool Foam::solidBodyMotionFunctions::riserOscillation::read
 )
 {
     solidBodyMotionFunction::read(SBMFCoeffs);
-    const dictionary riserDict(riserModel::readProperties(time_));
+    const autoPtr<IOdictionary> riserProperties(riserModel::readProperties(time_));
+    const dictionary& riserDict = riserProperties();
     motion_ = riserModel::read(riserDict).motionPtr();
     if (!motion_->uniformAlongAxis())
     {
