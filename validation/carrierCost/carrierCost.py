@@ -13,18 +13,15 @@ The ores are filled at rest relative to each carrier, so the scenes differ
 in their motion but not in their number: the ratio per particle-step is
 the carrier's cost (with the contacts the different motions bring). The
 cost is the solver's execution time from its first step to its last over
-the sum of the particles in the cloud at each step."""
+the sum of the particles in the cloud at each step (riserfoam.costs)."""
 import os
-import re
-import shutil
-import statistics
 import sys
 
 from riserfoam.cli import help_requested  # noqa: E402
 
 help_requested(__doc__)
 
-from riserfoam import cases, foamfields as ff, pipeflow
+from riserfoam import cases, costs, foamfields as ff, pipeflow
 
 work = os.path.abspath(sys.argv[1])
 END = float(sys.argv[2]) if len(sys.argv) > 2 else 0.3
@@ -70,37 +67,11 @@ def make(name):
     return case
 
 
-def run(case):
-    """seconds from the first step to the last, particle-steps, parcels"""
-    for folder in os.listdir(case):
-        if re.fullmatch(r"[0-9.e+-]+", folder) and float(folder) > 0:
-            shutil.rmtree(os.path.join(case, folder))
-    log = cases.run(["riserParcelFoam", "-case", case], os.path.join(case, "log.riserParcelFoam"))
-    times = [float(x) for x in re.findall(r"^ExecutionTime = (\S+) s", log, re.M)]
-    counts = [int(x) for x in re.findall(r"Current number of parcels\s+= (\d+)", log)]
-    return times[-1] - times[0], sum(counts[1:]), counts[-1]
-
-
 folders = {name: make(name) for name in CARRIERS}
-ratios = {name: [] for name in CARRIERS}
-parcels = {}
-for round_ in range(ROUNDS):
-    perStep = {}
-    for name in CARRIERS:
-        seconds, particleSteps, parcels[name] = run(folders[name])
-        perStep[name] = seconds / particleSteps
-    for name in CARRIERS:
-        ratios[name].append(perStep[name] / perStep["laminar"])
-    print("round %d: per particle-step %s" % (round_, ", ".join(
-        "%s %.3g us" % (k, 1e6 * v) for k, v in perStep.items())), flush=True)
-os.makedirs("results", exist_ok=True)
-with open("results/carrierCost.dat", "w") as out:
-    out.write("# riserParcelFoam, a 1 m periodic section of D = 0.1 m at C_v = 0.01, %g s:"
-              " execution time per particle-step as ratios to the laminar carrier's of the"
-              " same round (%d rounds)\n"
-              "# carrier parcels_at_end per_particle_step(median min max)\n" % (END, ROUNDS))
-    for name in CARRIERS:
-        r = ratios[name]
-        out.write("%s %d %.3f %.3f %.3f\n"
-                  % (name, parcels[name], statistics.median(r), min(r), max(r)))
-print(open("results/carrierCost.dat").read())
+ratios, parcels = costs.rounds(folders, "laminar", ROUNDS)
+costs.write("results/carrierCost.dat",
+            "# riserParcelFoam, a 1 m periodic section of D = 0.1 m at C_v = 0.01, %g s:"
+            " execution time per particle-step as ratios to the laminar carrier's of the"
+            " same round (%d rounds)\n"
+            "# carrier parcels_at_end per_particle_step(median min max)\n" % (END, ROUNDS),
+            ratios, parcels)

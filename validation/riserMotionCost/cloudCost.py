@@ -12,15 +12,12 @@ C_v = 0.01 (riserFill) and run for 1 s, the riser moving as
 The three scenes are the same to within a part in 1e5, so the particles
 and their contacts are the same and the ratio is the motion's cost. The
 cost is the solver's execution time from its first step to its last over
-the sum of the particles in the cloud at each step."""
+the sum of the particles in the cloud at each step (riserfoam.costs)."""
 import math
 import os
-import re
-import shutil
-import statistics
 import sys
 
-from riserfoam import cases, foamfields as ff
+from riserfoam import cases, costs, foamfields as ff
 
 work = os.path.abspath(sys.argv[1])
 END = float(sys.argv[2]) if len(sys.argv) > 2 else 1.0
@@ -83,36 +80,10 @@ def make(name):
     return case
 
 
-def run(case):
-    """seconds from the first step to the last, particle-steps, parcels"""
-    for folder in os.listdir(case):
-        if re.fullmatch(r"[0-9.e+-]+", folder) and float(folder) > 0:
-            shutil.rmtree(os.path.join(case, folder))
-    log = cases.run(["riserParcelFoam", "-case", case], os.path.join(case, "log.riserParcelFoam"))
-    times = [float(x) for x in re.findall(r"^ExecutionTime = (\S+) s", log, re.M)]
-    counts = [int(x) for x in re.findall(r"Current number of parcels\s+= (\d+)", log)]
-    return times[-1] - times[0], sum(counts[1:]), counts[-1]
-
-
 folders = {name: make(name) for name in MOTIONS}
-ratios = {name: [] for name in MOTIONS}
-parcels = {}
-for round_ in range(ROUNDS):
-    perStep = {}
-    for name in MOTIONS:
-        seconds, particleSteps, parcels[name] = run(folders[name])
-        perStep[name] = seconds / particleSteps
-    for name in MOTIONS:
-        ratios[name].append(perStep[name] / perStep["sinusoid"])
-    print("round %d: per particle-step %s" % (round_, ", ".join(
-        "%s %.3g us" % (k, 1e6 * v) for k, v in perStep.items())), flush=True)
-os.makedirs("results", exist_ok=True)
-with open("results/cloudCost.dat", "w") as out:
-    out.write("# riserParcelFoam, a 10 m section at C_v = 0.01, %g s: execution time per"
-              " particle-step as ratios to the sinusoid's of the same round (%d rounds)\n"
-              "# motion parcels_at_end per_particle_step(median min max)\n" % (END, ROUNDS))
-    for name in MOTIONS:
-        r = ratios[name]
-        out.write("%s %d %.3f %.3f %.3f\n"
-                  % (name, parcels[name], statistics.median(r), min(r), max(r)))
-print(open("results/cloudCost.dat").read())
+ratios, parcels = costs.rounds(folders, "sinusoid", ROUNDS)
+costs.write("results/cloudCost.dat",
+            "# riserParcelFoam, a 10 m section at C_v = 0.01, %g s: execution time per"
+            " particle-step as ratios to the sinusoid's of the same round (%d rounds)\n"
+            "# motion parcels_at_end per_particle_step(median min max)\n" % (END, ROUNDS),
+            ratios, parcels)

@@ -64,6 +64,94 @@ Foam::tmp<Foam::GeometricField<Type, Foam::fvPatchField, Foam::volMesh>> readFie
     return tmp<GeometricField<Type, fvPatchField, volMesh>>::New(io, mesh);
 }
 
+
+//- The volume-weighted means of the cells in bins of equal width in their
+//  distance from the riser's axis at time t: rows (r w k nu_t) of the
+//  bins that hold cells, from the axis out (sums over every processor)
+Foam::List<Foam::FixedList<Foam::scalar, 4>> binnedMeans
+(
+    const Foam::fvMesh& mesh,
+    const riser::RiserFlow& flow,
+    const Foam::scalar t,
+    const Foam::label nBins
+)
+{
+    using namespace Foam;
+    const volVectorField U(readField<vector>(mesh, "U"));
+    const volScalarField k(readField<scalar>(mesh, "k"));
+    const volScalarField nut(readField<scalar>(mesh, "nut"));
+    // per bin: volume, and the volume-weighted sums of r, w, k, nu_t
+    List<FixedList<scalar, 5>> sums(nBins, FixedList<scalar, 5>(Zero));
+    forAll(mesh.C(), celli)
+    {
+        const scalar r =
+            mag(fromCore(flow.motion().radialOffset(toCore(mesh.C()[celli]), t)));
+        FixedList<scalar, 5>& s = sums[min(label(r/flow.radius()*nBins), nBins - 1)];
+        const scalar V = mesh.V()[celli];
+        s[0] += V;
+        s[1] += V*r;
+        s[2] += V*U[celli].z();
+        s[3] += V*k[celli];
+        s[4] += V*nut[celli];
+    }
+    List<FixedList<scalar, 4>> rows;
+    for (FixedList<scalar, 5>& s : sums)
+    {
+        for (scalar& v : s)
+        {
+            reduce(v, sumOp<scalar>());
+        }
+        if (s[0] > 0)
+        {
+            rows.append(FixedList<scalar, 4>({s[1]/s[0], s[2]/s[0], s[3]/s[0], s[4]/s[0]}));
+        }
+    }
+    return rows;
+}
+
+
+//- The profile of the bins' rows: the axis' row first (a + b r^2 through
+//  the two innermost bins; k and nu_t at least 0), the no-slip wall's at
+//  radius R last
+Foam::List<Foam::FixedList<Foam::scalar, 4>> profileRows
+(
+    const Foam::List<Foam::FixedList<Foam::scalar, 4>>& bins,
+    const Foam::scalar R
+)
+{
+    using namespace Foam;
+    FixedList<scalar, 4> axis;
+    axis[0] = 0;
+    const scalar r1 = sqr(bins[0][0]), r2 = sqr(bins[1][0]);
+    for (label j = 1; j < 4; ++j)
+    {
+        axis[j] = (r2*bins[0][j] - r1*bins[1][j])/(r2 - r1);
+    }
+    axis[2] = max(axis[2], scalar(0));
+    axis[3] = max(axis[3], scalar(0));
+    List<FixedList<scalar, 4>> rows(1, axis);
+    rows.append(bins);
+    rows.append(FixedList<scalar, 4>({R, 0, 0, 0}));
+    return rows;
+}
+
+
+//- The rows, one a line: "<indent>(r w k nu_t)" or, without brackets,
+//  "<indent>r w k nu_t"
+void writeRows
+(
+    Foam::Ostream& os,
+    const Foam::List<Foam::FixedList<Foam::scalar, 4>>& rows,
+    const bool brackets
+)
+{
+    for (const Foam::FixedList<Foam::scalar, 4>& row : rows)
+    {
+        os  << "    " << (brackets ? "(" : "") << row[0] << ' ' << row[1] << ' '
+            << row[2] << ' ' << row[3] << (brackets ? ")" : "") << Foam::nl;
+    }
+}
+
 } // End anonymous namespace
 
 
@@ -96,104 +184,43 @@ int main(int argc, char *argv[])
             << "option -bins " << nBins << " is outside [3, 1000]" << exit(FatalError);
     }
 
-    const riserModel& theRiser = riserModel::New(mesh);
-    const riser::RiserFlow& flow = theRiser.flow();
+    const riser::RiserFlow& flow = riserModel::New(mesh).flow();
     const scalar R = flow.radius();
     const scalar t = runTime.value();
-
-    const tmp<volVectorField> U(readField<vector>(mesh, "U"));
-    const tmp<volScalarField> k(readField<scalar>(mesh, "k"));
-    const tmp<volScalarField> nut(readField<scalar>(mesh, "nut"));
-
-    // per bin: volume, and the volume-weighted sums of r, w, k, nu_t
-    List<FixedList<scalar, 5>> sums(nBins, FixedList<scalar, 5>(Zero));
-    forAll(mesh.C(), celli)
-    {
-        const point& c = mesh.C()[celli];
-        const scalar r = mag(fromCore(flow.motion().radialOffset(toCore(c), t)));
-        const label b = min(label(r/R*nBins), nBins - 1);
-        const scalar V = mesh.V()[celli];
-        sums[b][0] += V;
-        sums[b][1] += V*r;
-        sums[b][2] += V*U()[celli].z();
-        sums[b][3] += V*k()[celli];
-        sums[b][4] += V*nut()[celli];
-    }
-    for (FixedList<scalar, 5>& s : sums)
-    {
-        for (scalar& v : s)
-        {
-            reduce(v, sumOp<scalar>());
-        }
-    }
-
-    List<FixedList<scalar, 4>> rows;
-    for (const FixedList<scalar, 5>& s : sums)
-    {
-        if (s[0] > 0)
-        {
-            rows.append(FixedList<scalar, 4>({s[1]/s[0], s[2]/s[0], s[3]/s[0], s[4]/s[0]}));
-        }
-    }
-    if (rows.size() < 2)
+    const List<FixedList<scalar, 4>> bins = binnedMeans(mesh, flow, t, nBins);
+    if (bins.size() < 2)
     {
         FatalErrorInFunction
-            << "cells in " << rows.size() << " bin(s) only: lower -bins"
+            << "cells in " << bins.size() << " bin(s) only: lower -bins"
             << exit(FatalError);
     }
-    // the axis: a + b r^2 through the two innermost bins
-    FixedList<scalar, 4> axis;
-    axis[0] = 0;
-    const scalar r1 = sqr(rows[0][0]), r2 = sqr(rows[1][0]);
-    for (label j = 1; j < 4; ++j)
-    {
-        axis[j] = (r2*rows[0][j] - r1*rows[1][j])/(r2 - r1);
-    }
-    axis[2] = max(axis[2], scalar(0));
-    axis[3] = max(axis[3], scalar(0));
-    List<FixedList<scalar, 4>> profile(1, axis);
-    profile.append(rows);
-    profile.append(FixedList<scalar, 4>({R, 0, 0, 0}));
+    const List<FixedList<scalar, 4>> rows = profileRows(bins, R);
 
-    IOdictionary out
+    // in the case's constant/ (the undecomposed case's in a parallel run)
+    const IOobject io
     (
-        IOobject
-        (
-            "riserCarrierProfile",
-            runTime.constant(),
-            mesh,
-            IOobject::NO_READ,
-            IOobject::NO_WRITE,
-            false
-        )
+        "riserCarrierProfile", runTime.constant(), mesh,
+        IOobject::NO_READ, IOobject::NO_WRITE, false
     );
+    const fileName file(runTime.globalPath()/runTime.constant()/io.name());
     if (Pstream::master())
     {
-        OFstream os(out.objectPath());
+        OFstream os(file);
         os.precision(12);
-        out.writeHeader(os);
+        io.writeHeader(os, IOdictionary::typeName);
         os  << "// riserCarrierProfile: the mean flow of " << runTime.globalPath()
-            << " at t = " << t << " s, " << rows.size() << " bins of "
+            << " at t = " << t << " s, " << bins.size() << " bins of "
             << R/nBins << " m" << nl
             << "// rows: r [m], w [m/s], k [m^2/s^2], nu_t [m^2/s]" << nl << nl
             << "rows" << nl << "(" << nl;
-        for (const FixedList<scalar, 4>& row : profile)
-        {
-            os  << "    (" << row[0] << ' ' << row[1] << ' ' << row[2] << ' '
-                << row[3] << ')' << nl;
-        }
+        writeRows(os, rows, true);
         os  << ");" << nl;
     }
 
     Info<< "riserCarrierProfile: the mean flow at t = " << t << " s in "
-        << rows.size() << " bins of " << R/nBins << " m, written to "
-        << out.objectPath() << nl
-        << "    r [m]  w [m/s]  k [m^2/s^2]  nu_t [m^2/s]" << nl;
-    for (const FixedList<scalar, 4>& row : profile)
-    {
-        Info<< "    " << row[0] << ' ' << row[1] << ' ' << row[2] << ' '
-            << row[3] << nl;
-    }
+        << bins.size() << " bins of " << R/nBins << " m, written to "
+        << file << nl << "    r [m]  w [m/s]  k [m^2/s^2]  nu_t [m^2/s]" << nl;
+    writeRows(Info, rows, false);
     Info<< nl << "End" << nl << endl;
     return 0;
 }

@@ -21,6 +21,7 @@
 #include "interpolation/sampleGrid.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <stdexcept>
@@ -55,53 +56,43 @@ public:
             requireInRange(law, "k", k[i], 0.0, Bound::closed, HUGE_VAL, Bound::open);
             requireInRange(law, "nu_t", nut[i], 0.0, Bound::closed, HUGE_VAL, Bound::open);
         }
-        w_ = Column(grid_, w);
-        k_ = Column(grid_, k);
-        nut_ = Column(grid_, nut);
+        w_ = SampleGrid::Column(grid_, mirroredValues(w));
+        k_ = SampleGrid::Column(grid_, mirroredValues(k));
+        nut_ = SampleGrid::Column(grid_, mirroredValues(nut));
     }
 
     const char* type() const override { return "tabulated"; }
     double radius() const override { return R_; }
     double centreLineSpeed() const override { return w_.value[mid()]; }
     //- The turbulent kinetic energy k at distance r from the axis
-    double turbulentEnergy(double r) const { return std::max(k_.at(grid_, clamp(r), 0), 0.0); }
+    double turbulentEnergy(double r) const { return std::max(valueAt(k_, r)[0], 0.0); }
     //- The eddy viscosity nu_t at distance r from the axis
-    double eddyViscosity(double r) const { return std::max(nut_.at(grid_, clamp(r), 0), 0.0); }
+    double eddyViscosity(double r) const { return std::max(valueAt(nut_, r)[0], 0.0); }
 
 protected:
     Values compute(double r) const override
     {
-        const double x = clamp(r);
-        return {w_.at(grid_, x, 0), w_.at(grid_, x, 1)};
+        const std::array<double, 3> w = valueAt(w_, r);
+        return {w[0], w[1]};
     }
 
 private:
-    //- One quantity's samples on the mirrored grid and their nodal slopes
-    struct Column
+    //- A quantity's value and derivatives at distance r from the axis
+    std::array<double, 3> valueAt(const SampleGrid::Column& c, double r) const
     {
-        std::vector<double> value, slope;
+        double out[3];
+        c.evaluate(grid_.piece(clamp(r)), out);
+        return {out[0], out[1], out[2]};
+    }
 
-        Column() = default;
-        Column(const SampleGrid& grid, const std::vector<double>& half)
-        {
-            const int M = static_cast<int>(half.size());
-            for (int i = M - 1; i > 0; --i) value.push_back(half[i]);
-            value.insert(value.end(), half.begin(), half.end());
-            const auto at = [&](int j) { return value[j]; };
-            for (int j = 0; j < grid.size(); ++j) slope.push_back(grid.slope(at, j));
-        }
-
-        //- The value (derivative 0) or the slope (1) at r >= 0
-        double at(const SampleGrid& grid, double r, int derivative) const
-        {
-            const SampleGrid::Piece p = grid.piece(r);
-            double H[3][4];
-            SampleGrid::basis(p, H);
-            const double* B = H[derivative];
-            return B[0]*value[p.i] + B[1]*slope[p.i] + B[2]*value[p.i + 1]
-                 + B[3]*slope[p.i + 1];
-        }
-    };
+    //- The samples of a quantity mirrored about the axis (even in r)
+    static std::vector<double> mirroredValues(const std::vector<double>& half)
+    {
+        std::vector<double> values;
+        for (std::size_t i = half.size() - 1; i > 0; --i) values.push_back(half[i]);
+        values.insert(values.end(), half.begin(), half.end());
+        return values;
+    }
 
     //- The radii mirrored about the axis, checked
     static std::vector<double> mirrored(double R, const std::vector<double>& r)
@@ -132,9 +123,8 @@ private:
                 );
             }
         }
-        std::vector<double> points;
-        for (std::size_t i = r.size() - 1; i > 0; --i) points.push_back(-r[i]);
-        points.insert(points.end(), r.begin(), r.end());
+        std::vector<double> points = mirroredValues(r);
+        for (std::size_t i = 0; i + 1 < r.size(); ++i) points[i] = -points[i];
         return points;
     }
 
@@ -146,7 +136,7 @@ private:
 
     double R_;
     SampleGrid grid_;
-    Column w_, k_, nut_;
+    SampleGrid::Column w_, k_, nut_;
 };
 
 } // namespace riser

@@ -7,7 +7,8 @@
 // tabulated pipe profile (riser::TabulatedPipeProfile) across the pipe.
 //
 // The samples are any indexable sequence at(k), k = 0 .. M-1 (a column of
-// a table, one time of a motion table). Sampling: the nodal slopes' error
+// a table, one time of a motion table); a Column keeps one quantity's
+// samples with their nodal slopes and evaluates its cubic. Sampling: the nodal slopes' error
 // is (dz^2/6) f''' to leading order, estimated from the change of
 // neighbouring second differences (slopeErrorEstimate); callers refuse a
 // table whose estimate exceeds their tolerance of the largest slope.
@@ -98,6 +99,35 @@ public:
         };
         std::copy(&B[0][0], &B[0][0] + 12, &H[0][0]);
     }
+
+    //- One quantity's samples at the grid's points and their nodal slopes
+    struct Column
+    {
+        std::vector<double> value, slope;
+
+        Column() = default;
+
+        //- samples: one a point of grid
+        Column(const SampleGrid& grid, std::vector<double> samples)
+        :
+            value(std::move(samples))
+        {
+            const auto at = [this](int k) { return value[k]; };
+            for (int i = 0; i < grid.size(); ++i) slope.push_back(grid.slope(at, i));
+        }
+
+        //- The value, the slope and the second derivative in a piece
+        void evaluate(const Piece& p, double (&out)[3]) const
+        {
+            double H[3][4];
+            basis(p, H);
+            for (int d = 0; d < 3; ++d)
+            {
+                out[d] = H[d][0]*value[p.i] + H[d][1]*slope[p.i] + H[d][2]*value[p.i + 1]
+                       + H[d][3]*slope[p.i + 1];
+            }
+        }
+    };
 
     //- The nodal slope at point i of the samples at(k): the derivative
     //  of the parabola through three neighbouring samples (one-sided at

@@ -81,13 +81,13 @@ public:
     //  too coarse for a shape (naming the spacing needed)
     ModeShapes(std::vector<double> heights, std::vector<std::vector<double>> columns)
     :
-        grid_(std::move(heights), "riser::ModeShapes", "height"), phi_(std::move(columns))
+        grid_(std::move(heights), "riser::ModeShapes", "height")
     {
         const char* law = "riser::ModeShapes";
-        requireInRange(law, "number of shapes", double(phi_.size()), 1.0, Bound::closed,
+        requireInRange(law, "number of shapes", double(columns.size()), 1.0, Bound::closed,
                        HUGE_VAL, Bound::open);
         double error = 0.0;
-        for (const std::vector<double>& phi : phi_)
+        for (std::vector<double>& phi : columns)
         {
             if (phi.size() != std::size_t(grid_.size()))
             {
@@ -98,20 +98,19 @@ public:
                 requireInRange(law, "shape value", v, -HUGE_VAL, Bound::open, HUGE_VAL,
                                Bound::open);
             }
-            const auto at = [&](int k) { return phi[k]; };
-            std::vector<double> slope(phi.size());
+            shapes_.emplace_back(grid_, std::move(phi));
+            const SampleGrid::Column& c = shapes_.back();
             double maxValue = 0.0, maxSlope = 0.0;
             for (int i = 0; i < grid_.size(); ++i)
             {
-                slope[i] = grid_.slope(at, i);
-                maxValue = std::max(maxValue, std::abs(phi[i]));
-                maxSlope = std::max(maxSlope, std::abs(slope[i]));
+                maxValue = std::max(maxValue, std::abs(c.value[i]));
+                maxSlope = std::max(maxSlope, std::abs(c.slope[i]));
             }
             if (maxSlope > 0)
             {
+                const auto at = [&](int k) { return c.value[k]; };
                 error = std::max(error, grid_.slopeErrorEstimate(at)/maxSlope);
             }
-            slope_.push_back(std::move(slope));
             // the interpolant may overshoot its nodes: the motion table's
             // margin of 5 %
             maxAbs_.push_back({1.05*maxValue, 1.05*maxSlope});
@@ -127,20 +126,13 @@ public:
         }
     }
 
-    int count() const { return static_cast<int>(phi_.size()); }
+    int count() const { return static_cast<int>(shapes_.size()); }
     const SampleGrid& grid() const { return grid_; }
 
     //- phi_n, its slope and its curvature in a piece of the grid
     void evaluate(int n, const SampleGrid::Piece& p, double (&out)[3]) const
     {
-        double H[3][4];
-        SampleGrid::basis(p, H);
-        const std::vector<double>& f = phi_[n - 1];
-        const std::vector<double>& m = slope_[n - 1];
-        for (int d = 0; d < 3; ++d)
-        {
-            out[d] = H[d][0]*f[p.i] + H[d][1]*m[p.i] + H[d][2]*f[p.i + 1] + H[d][3]*m[p.i + 1];
-        }
+        shapes_[n - 1].evaluate(p, out);
     }
 
     //- Bounds of |phi_n| (nz = 0) and of its slope (nz = 1) over the riser
@@ -148,7 +140,7 @@ public:
 
 private:
     SampleGrid grid_;
-    std::vector<std::vector<double>> phi_, slope_;
+    std::vector<SampleGrid::Column> shapes_;
     std::vector<std::array<double, 2>> maxAbs_;
 };
 

@@ -285,6 +285,32 @@ riser::MotionPtr readSinusoid(const dictionary& dict)
 }
 
 
+//- FatalIOError unless the list entry key of dict holds numbers only (nan
+//  and inf are words to the parser): rows of the form rowForm
+void requireNumbers(const dictionary& dict, const word& key, const char* rowForm)
+{
+    for (const token& t : dict.lookup(key))
+    {
+        if (!t.isNumber() && !t.isPunctuation())
+        {
+            FatalIOErrorInFunction(dict)
+                << "entry '" << key << "': a list of " << rowForm
+                << " of finite numbers, found " << t << nl
+                << exit(FatalIOError);
+        }
+    }
+}
+
+
+//- A file named relative to the case of the riserProperties dict (the
+//  folder holding constant/), or absolute; environment variables expanded
+fileName caseFile(const dictionary& dict, fileName file)
+{
+    file.expand();
+    return file.isAbsolute() ? file : dict.topDict().name().path().path()/file;
+}
+
+
 //- The rows of the list entry key of dict (empty without it), each of N
 //  finite numbers within [lo, hi]: a rowName (harmonic, mode, row) of the
 //  form rowForm, its fields named by names, the rows counted from first
@@ -306,17 +332,7 @@ List<FixedList<scalar, N>> readRows
     {
         return List<FixedList<scalar, N>>();
     }
-    // numbers only: nan and inf are words to the parser
-    for (const token& t : dict.lookup(key))
-    {
-        if (!t.isNumber() && !t.isPunctuation())
-        {
-            FatalIOErrorInFunction(dict)
-                << "entry '" << key << "': a list of " << rowForm
-                << " of finite numbers, found " << t << nl
-                << exit(FatalIOError);
-        }
-    }
+    requireNumbers(dict, key, rowForm);
     const List<FixedList<scalar, N>> rows =
         dict.get<List<FixedList<scalar, N>>>(key);
     forAll(rows, i)
@@ -403,15 +419,7 @@ std::vector<riser::Mode> readModeList(const dictionary& dict, const word& key)
 //  (z phi_1 phi_2 ...) of finite numbers, as many in each
 riser::ShapesPtr readShapes(const dictionary& m)
 {
-    for (const token& t : m.lookup("shapes"))
-    {
-        if (!t.isNumber() && !t.isPunctuation())
-        {
-            FatalIOErrorInFunction(m)
-                << "entry 'shapes': a list of rows (z phi_1 phi_2 ...) of"
-                << " finite numbers, found " << t << nl << exit(FatalIOError);
-        }
-    }
+    requireNumbers(m, "shapes", "rows (z phi_1 phi_2 ...)");
     const List<scalarList> rows = m.get<List<scalarList>>("shapes");
     const label columns = rows.empty() ? 0 : rows[0].size();
     std::vector<double> heights;
@@ -514,13 +522,7 @@ struct tableRows
 //  '#' comments, one first line of column names
 tableRows readTableFile(const dictionary& m)
 {
-    fileName file(m.get<fileName>("file"));
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        // relative to the case: the folder holding constant/
-        file = m.topDict().name().path().path()/file;
-    }
+    const fileName file(caseFile(m, m.get<fileName>("file")));
     std::ifstream in(file);
     if (!in)
     {
@@ -781,7 +783,7 @@ riser::MotionPtr readMotion(const dictionary& dict)
 //  (what needs it) FatalIOError
 scalar readViscosity(const dictionary& dict, const char* required = nullptr)
 {
-    const fileName file(dict.topDict().name().path()/"transportProperties");
+    const fileName file(caseFile(dict, "constant/transportProperties"));
     IFstream is(file);
     if (!is.good())
     {
@@ -812,13 +814,7 @@ std::shared_ptr<const riser::TabulatedPipeProfile> readProfileFile
     (
         dict, "profileFile", "the file of the samples (riserCarrierProfile's)"
     );
-    fileName file(dict.get<fileName>("profileFile"));
-    file.expand();
-    if (!file.isAbsolute())
-    {
-        // relative to the case: the folder holding constant/
-        file = dict.topDict().name().path().path()/file;
-    }
+    const fileName file(caseFile(dict, dict.get<fileName>("profileFile")));
     IFstream is(file);
     if (!is.good())
     {
