@@ -8,7 +8,8 @@
 // DragLaw::continuous) with the pipe's wall factors switched off (d/D = 0:
 // an unbounded sphere; no wall correction of the drag near the flat wall
 // either); F_H the Basset force with the classical C_H = 6
-// (riser::HistoryStepper, newest weight implicit, window + tail); F_C the
+// (riser::HistoryStepper, newest weight implicit, window + tail), with the
+// classical kernel or Mei & Adrian's finite-Re one; F_C the
 // Hertz–Mindlin wall force with Tsuji damping calibrated to e_dry
 // (riser::HertzMindlin), dry, wet by its restitution e(St)
 // (riser::WetRestitution, the library's `wet { type stokesRestitution; }`,
@@ -78,7 +79,7 @@ public:
 
     SphereOnFlatWall(const Scene& s, bool basset, bool fluid = true, Wetness wet = Wetness::dry)
     :
-        s_(s), fluid_(fluid),
+        s_(s), fluid_(fluid), tauD_(s.d*s.d*s.rhoF/s.mu),
         KH_(basset && fluid ? classicalBassetCoefficient*s.d*s.d/4.0*std::sqrt(M_PI*s.rhoF*s.mu) : 0.0),
         unbounded_(0.0),
         contact_(lawOf(s, wet)),
@@ -96,6 +97,11 @@ public:
     double mass() const { return s_.mp(); }
     double addedMass() const { return fluid_ ? s_.CA*s_.mf() : 0.0; }
     double historyCoefficient() const { return KH_; }
+    //- s* of the finite-Re history kernel at velocity v
+    double historyAgeScale(double v, double) const
+    {
+        return meiAdrianAgeScale(s_.reynolds(v), tauD_);
+    }
     double carrierVelocity(double) const { return 0.0; }
     double carrierAcceleration(double) const { return 0.0; }
 
@@ -147,6 +153,7 @@ public:
 private:
     const Scene& s_;
     bool fluid_;
+    double tauD_;       //!< d^2/nu [s]
     double KH_;
     WallFactors unbounded_;
     HertzMindlin contact_;
@@ -178,7 +185,8 @@ struct Run
 //- Release from rest, follow the sphere to tAfter past the first contact,
 //  or to tEnd after release, whichever comes first
 inline Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAfter,
-                  long outputEvery, Wetness wet = Wetness::dry, double tEnd = HUGE_VAL)
+                  long outputEvery, Wetness wet = Wetness::dry, double tEnd = HUGE_VAL,
+                  HistoryKernelLaw kernel = HistoryKernelLaw::classical)
 {
     SphereOnFlatWall law(s, basset, true, wet);
     law.place(0.0, s.releaseGap + s.R(), 0.0);
@@ -187,7 +195,8 @@ inline Run bounce(const Scene& s, bool basset, double h, double windowTime, doub
     Run r;
     const std::clock_t start = std::clock();
     HistoryStepper<SphereOnFlatWall> stepper(law, HistoryMethod::windowTail, h, window, 0.0, 0.0,
-                                             NewestHistoryWeight::implicit, HistoryTail::leastSquares);
+                                             NewestHistoryWeight::implicit, HistoryTail::leastSquares,
+                                             kernel);
     double gapOld = law.gap(), vOld = 0.0;
     bool flying = true;
     while (stepper.time() < tEnd)

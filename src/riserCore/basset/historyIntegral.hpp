@@ -35,6 +35,20 @@
 //   ours and is checked against the published set
 //   (tests/core/historyIntegralTest.cpp).
 //
+// Kernels (HistoryKernelLaw): classical, 1/sqrt(s) as above, or Mei &
+// Adrian's finite-Re kernel psi(s/s*)/sqrt(s) (meiAdrianKernel.hpp), s* the
+// age scale of the particle's current Re, given with each evaluation and
+// taken for its whole history. Its window weights are the classical ones
+// times psi at each lag (the product psi g taken linear between grid
+// points; psi's (s/s*)^(3/4) at s = 0 makes it of order h^(5/4) s*^(-3/4),
+// where the classical quadrature is of order 2), its initial-slip
+// term is w(0) psi(t/s*)/sqrt(t), and its tail weights are fitted to psi
+// at the ratio s*/t_win (the tail constant choice does not apply). A
+// particle's first step (released) takes the classical weight for its
+// acceleration, a relative error below (h/s*)^(3/4) in that step alone.
+// The newest weight, psi(0) (4/3) sqrt(h), is the classical one. The
+// state is the same for both kernels: a history continues under either.
+//
 // Split into the quadrature (HistoryKernel: method, step, window, weights
 // and tail constants; one per cloud or integrator) and the state of one
 // particle (HistoryState: initial slip, step count, the window of g in a
@@ -52,6 +66,7 @@
 #define RISERCORE_BASSET_HISTORYINTEGRAL_HPP
 
 #include "checks.hpp"
+#include "meiAdrianKernel.hpp"
 
 #include <Eigen/Dense>
 
@@ -67,6 +82,8 @@ namespace riser {
 enum class HistoryMethod { fullHistory, windowTail };
 
 enum class HistoryTail { vanHinsberg2011, leastSquares };
+
+enum class HistoryKernelLaw { classical, meiAdrian };
 
 //- Exponential-tail constants: times t~_i (in window times) and weights a_i
 //  of van Hinsberg, ten Thije Boonkkamp & Clercx (2011), m = 10.
@@ -152,11 +169,13 @@ class HistoryKernel
 public:
     static constexpr int m = HistoryTailConstants::m;
 
-    //- method, step h > 0, window N >= 2 steps (windowTail only)
+    //- method, step h > 0, window N >= 2 steps (windowTail only), the
+    //  classical kernel's tail constants, the kernel
     HistoryKernel(HistoryMethod method, double h, long window,
-                  HistoryTail tail = HistoryTail::vanHinsberg2011)
+                  HistoryTail tail = HistoryTail::vanHinsberg2011,
+                  HistoryKernelLaw law = HistoryKernelLaw::classical)
     :
-        method_(method), h_(h), sqrtH_(std::sqrt(h)), N_(window)
+        method_(method), law_(law), h_(h), sqrtH_(std::sqrt(h)), N_(window)
     {
         requirePositive("riser::HistoryKernel", "h", h);
         if (windowed())
@@ -171,7 +190,8 @@ public:
                 const double c = 0.5/T;
                 const double x = c*h_;
                 decay_[i] = std::exp(-x);
-                amplitude_[i] = a[i]*std::sqrt(std::exp(1.0)/T)*std::exp(-c*tWin);
+                tailBasis_[i] = std::sqrt(std::exp(1.0)/T)*std::exp(-c*tWin);
+                amplitude_[i] = a[i]*tailBasis_[i];
                 // exact slab integrals of exp(-c s) and s exp(-c s), s in [0, h]
                 I0_[i] = -std::expm1(-x)/c;
                 I1_[i] = (x < 1e-2
@@ -188,6 +208,7 @@ public:
     double step() const { return h_; }
     long window() const { return N_; }
     bool windowed() const { return method_ == HistoryMethod::windowTail; }
+    HistoryKernelLaw law() const { return law_; }
 
     //- A new history: initial slip w0 (zero: no initial-slip term) and
     //  g0 = dw/dt at t = 0+
@@ -251,7 +272,12 @@ public:
     //  (exact for constant g); firstKnownPart and firstWeight are the two
     //  parts, released() the state after that step.
     template<class Value>
-    Value firstKnownPart(const Value& w0) const { return w0*(1.0/sqrtH_); }
+    Value firstKnownPart(const Value& w0, double ageScale = HUGE_VAL) const
+    {
+        return finiteRe()
+            ? w0*(meiAdrianFactor(h_/ageScale)/sqrtH_)
+            : w0*(1.0/sqrtH_);
+    }
 
     double firstWeight() const { return 2.0*sqrtH_; }
 
@@ -263,25 +289,26 @@ public:
         return s;
     }
 
-    //- H at the current time (after at least one push)
+    //- H at the current time (after at least one push); ageScale: s* of
+    //  the finite-Re kernel at the particle's Re (unused by the classical)
     template<class Value>
-    Value value(const HistoryState<Value>& s) const
+    Value value(const HistoryState<Value>& s, double ageScale = HUGE_VAL) const
     {
-        return sum(s, 0, s.steps, s.tail);
+        return sum(s, 0, s.steps, s.tail, 0, ageScale);
     }
 
     //- H at the next time without the newest value's part:
     //  H(t_{n+1}) = knownPart() + newestWeight() g_{n+1}
     template<class Value>
-    Value knownPart(const HistoryState<Value>& s) const
+    Value knownPart(const HistoryState<Value>& s, double ageScale = HUGE_VAL) const
     {
         if (full(s))
         {
             std::array<Value, m> tail = s.tail;
             advanceTail(s, tail);
-            return sum(s, 1, s.steps + 1, tail, 1);
+            return sum(s, 1, s.steps + 1, tail, 1, ageScale);
         }
-        return sum(s, 0, s.steps + 1, s.tail, 1);
+        return sum(s, 0, s.steps + 1, s.tail, 1, ageScale);
     }
 
     //- Commit g_{n+1} = dw/dt at the next time and advance to it
@@ -333,6 +360,8 @@ public:
     }
 
 private:
+    bool finiteRe() const { return law_ == HistoryKernelLaw::meiAdrian; }
+
     template<class Value>
     bool full(const HistoryState<Value>& s) const
     {
@@ -361,6 +390,42 @@ private:
         {
             interior_[k] = sqrtH_*historyWeight(k, k + 1);
         }
+        if (finiteRe())
+        {
+            const long oldLags = long(lagPower_.size());
+            lagPower_.resize(size);
+            for (long k = oldLags; k < size; ++k) lagPower_[k] = std::pow(double(k), 0.75);
+        }
+    }
+
+    //- psi at each lag k for s*: 1/(1 + (k h/s*)^(3/4))^2
+    struct LagFactor
+    {
+        const std::vector<double>& lagPower;
+        double scale;       // (h/s*)^(3/4)
+
+        double operator()(long k) const
+        {
+            const double r = 1.0 + scale*
+                (k < long(lagPower.size()) ? lagPower[k] : std::pow(double(k), 0.75));
+            return 1.0/(r*r);
+        }
+    };
+
+    //- The classical kernel: no factor
+    struct NoFactor
+    {
+        double operator()(long) const { return 1.0; }
+    };
+
+    //- The tail weights of the finite-Re kernel at s*
+    std::array<double, m> finiteReAmplitudes(double ageScale) const
+    {
+        static const MeiAdrianTail<m> fitted(HistoryTailConstants::t);
+        const std::array<double, m> b = fitted.weights(ageScale/(N_*h_));
+        std::array<double, m> out;
+        for (int i = 0; i < m; ++i) out[i] = b[i]*tailBasis_[i];
+        return out;
     }
 
     double interior(long k) const
@@ -368,14 +433,35 @@ private:
         return k < long(interior_.size()) ? interior_[k] : sqrtH_*historyWeight(k, k + 1);
     }
 
-    //- Initial-slip term at step n, window values from chronological
-    //  position 'first' with lags shifted by 'shift' (1: the next time,
-    //  whose own value is left out), and the tail sums
+    //- The sum of the kernel's law at s* (see weighted)
     template<class Value>
     Value sum(const HistoryState<Value>& s, long first, long n,
-              const std::array<Value, m>& tail, long shift = 0) const
+              const std::array<Value, m>& tail, long shift, double ageScale) const
     {
-        Value H = s.slip0*(1.0/std::sqrt(n*h_));
+        if (!finiteRe())
+        {
+            return weighted(s, first, n, tail, shift, NoFactor(), amplitude_);
+        }
+        requireInRange("riser::HistoryKernel", "s* (age scale)", ageScale,
+                       0.0, Bound::open, HUGE_VAL, Bound::closed);
+        const LagFactor psi{lagPower_, std::pow(h_/ageScale, 0.75)};
+        return weighted
+        (
+            s, first, n, tail, shift, psi,
+            windowed() ? finiteReAmplitudes(ageScale) : amplitude_
+        );
+    }
+
+    //- Initial-slip term at step n, window values from chronological
+    //  position 'first' with lags shifted by 'shift' (1: the next time,
+    //  whose own value is left out), each weight times psi(lag), and the
+    //  tail sums with their amplitudes
+    template<class Value, class Factor>
+    Value weighted(const HistoryState<Value>& s, long first, long n,
+                   const std::array<Value, m>& tail, long shift, const Factor& psi,
+                   const std::array<double, m>& amplitude) const
+    {
+        Value H = s.slip0*(psi(n)/std::sqrt(n*h_));
         const long last = long(s.window.size()) - 1;       // newest stored
         const long span = last - first + shift;             // oldest lag
         for (long j = first; j <= last; ++j)
@@ -384,21 +470,24 @@ private:
             const double w = lag == span
                 ? sqrtH_*historyWeight(lag, span)
                 : (lag == 0 ? newestWeight() : interior(lag));
-            H += s.at(j)*w;
+            H += s.at(j)*(w*psi(lag));
         }
         if (windowed())
         {
-            for (int i = 0; i < m; ++i) H += tail[i]*amplitude_[i];
+            for (int i = 0; i < m; ++i) H += tail[i]*amplitude[i];
         }
         return H;
     }
 
     HistoryMethod method_;
+    HistoryKernelLaw law_;
     double h_;
     double sqrtH_;
     long N_;
     mutable std::vector<double> interior_;
-    std::array<double, m> decay_{}, amplitude_{}, I0_{}, I1_{};
+    //- k^(3/4) for the finite-Re kernel's factor at lag k (as interior_)
+    mutable std::vector<double> lagPower_;
+    std::array<double, m> decay_{}, amplitude_{}, tailBasis_{}, I0_{}, I1_{};
 };
 
 //- The history integral of one particle: a kernel and its state
@@ -410,16 +499,22 @@ public:
     //  slip w0 (zero: no initial-slip term), g0 = dw/dt at t = 0+
     HistoryIntegral(HistoryMethod method, double h, long window,
                     const Value& w0, const Value& g0,
-                    HistoryTail tail = HistoryTail::vanHinsberg2011)
+                    HistoryTail tail = HistoryTail::vanHinsberg2011,
+                    HistoryKernelLaw law = HistoryKernelLaw::classical)
     :
-        kernel_(method, h, window, tail),
+        kernel_(method, h, window, tail, law),
         state_(kernel_.start(w0, g0))
     {}
 
     long stored() const { return kernel_.stored(state_); }
-    Value value() const { return kernel_.value(state_); }
+    HistoryKernelLaw law() const { return kernel_.law(); }
+    //- ageScale: s* of the finite-Re kernel (unused by the classical)
+    Value value(double ageScale = HUGE_VAL) const { return kernel_.value(state_, ageScale); }
     double newestWeight() const { return kernel_.newestWeight(); }
-    Value knownPart() const { return kernel_.knownPart(state_); }
+    Value knownPart(double ageScale = HUGE_VAL) const
+    {
+        return kernel_.knownPart(state_, ageScale);
+    }
     void push(const Value& g) { kernel_.push(state_, g); }
 
 private:

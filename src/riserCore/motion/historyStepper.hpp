@@ -35,6 +35,13 @@
 // validation/basset: bounded at 0.42 h_c, growing at 0.45 h_c). Light
 // particles have a small h_c: for them only the implicit weight is usable.
 
+// The history kernel is the classical one or Mei & Adrian's finite-Re one
+// (HistoryKernelLaw); the latter needs the System's
+//     double historyAgeScale(const Value& v, double t)
+// the kernel's age scale s* at the particle's Reynolds number
+// (riser::meiAdrianAgeScale), taken at the start of each step for that
+// step's history.
+//
 // The step h is constant (the history's grid). The history's first value
 // needs dw/dt at t = 0: the System must start without slip (w(0) = 0) or
 // accept the initial-slip term, which makes the Basset force infinite at
@@ -50,10 +57,25 @@
 #include <cmath>
 #include <stdexcept>
 #include <type_traits>
+#include <utility>
 
 namespace riser {
 
 enum class NewestHistoryWeight { implicit, lagged };
+
+//- Whether a System gives the finite-Re kernel's age scale
+template<class System, class = void>
+struct givesHistoryAgeScale : std::false_type {};
+
+template<class System>
+struct givesHistoryAgeScale
+<
+    System,
+    std::void_t<decltype(std::declval<const System&>().historyAgeScale
+    (
+        std::declval<typename System::Value>(), 0.0
+    ))>
+> : std::true_type {};
 
 template<class System>
 class HistoryStepper
@@ -64,7 +86,8 @@ public:
     HistoryStepper(const System& system, HistoryMethod method, double h,
                    long window, const Value& v0, double t0 = 0.0,
                    NewestHistoryWeight newest = NewestHistoryWeight::implicit,
-                   HistoryTail tail = HistoryTail::vanHinsberg2011)
+                   HistoryTail tail = HistoryTail::vanHinsberg2011,
+                   HistoryKernelLaw law = HistoryKernelLaw::classical)
     :
         sys_(system),
         implicit_(newest == NewestHistoryWeight::implicit),
@@ -73,8 +96,17 @@ public:
         v_(v0),
         a_(initialAcceleration(system, v0, t0)),
         history_(method, h, window, system.carrierVelocity(t0) - v0,
-                 system.carrierAcceleration(t0) - a_, tail)
-    {}
+                 system.carrierAcceleration(t0) - a_, tail, law)
+    {
+        if (law == HistoryKernelLaw::meiAdrian && !givesHistoryAgeScale<System>::value)
+        {
+            throw std::invalid_argument
+            (
+                "riser::HistoryStepper: the finite-Re history kernel needs the"
+                " system's historyAgeScale(v, t)"
+            );
+        }
+    }
 
     double time() const { return t_; }
     const Value& velocity() const { return v_; }
@@ -87,9 +119,10 @@ public:
         const double mA = sys_.addedMass(), KH = sys_.historyCoefficient();
         const Value DuDt = sys_.carrierAcceleration(tNew);
         const double inertia = sys_.mass() + mA + (implicit_ ? KH*c : 0.0);
+        const Value H = history_.knownPart(ageScale());
         const Value known = implicit_
-          ? Value(KH*history_.knownPart() + (mA + KH*c)*DuDt)
-          : Value(KH*history_.knownPart() + mA*DuDt + KH*c*(DuDt - a_));
+          ? Value(KH*H + (mA + KH*c)*DuDt)
+          : Value(KH*H + mA*DuDt + KH*c*(DuDt - a_));
 
         Value a = a_;
         double change = 0.0, size = 1.0;
@@ -124,6 +157,19 @@ public:
     }
 
 private:
+    //- s* of the finite-Re kernel at the step's start (infinite: classical)
+    double ageScale() const
+    {
+        if constexpr (givesHistoryAgeScale<System>::value)
+        {
+            if (history_.law() == HistoryKernelLaw::meiAdrian)
+            {
+                return sys_.historyAgeScale(v_, t_);
+            }
+        }
+        return HUGE_VAL;
+    }
+
     static double norm(double x) { return std::abs(x); }
 
     //- The scalar step's acceleration: the root of the residual
