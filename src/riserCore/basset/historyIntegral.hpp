@@ -190,8 +190,10 @@ public:
                 const double c = 0.5/T;
                 const double x = c*h_;
                 decay_[i] = std::exp(-x);
+                // the finite-Re kernel's basis; the classical amplitude in
+                // its own order of products (its results kept bit for bit)
                 tailBasis_[i] = std::sqrt(std::exp(1.0)/T)*std::exp(-c*tWin);
-                amplitude_[i] = a[i]*tailBasis_[i];
+                amplitude_[i] = a[i]*std::sqrt(std::exp(1.0)/T)*std::exp(-c*tWin);
                 // exact slab integrals of exp(-c s) and s exp(-c s), s in [0, h]
                 I0_[i] = -std::expm1(-x)/c;
                 I1_[i] = (x < 1e-2
