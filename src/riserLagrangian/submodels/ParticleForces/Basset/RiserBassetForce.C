@@ -19,7 +19,41 @@ riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
     const scalar deltaT
 )
 {
-    checkedEntry::allowedKeys(coeffs, {"coefficient", "method", "tail", "windowTime"});
+    checkedEntry::allowedKeys
+    (
+        coeffs, {"coefficient", "kernel", "method", "tail", "windowTime"}
+    );
+    const riser::HistoryKernelLaw law =
+        coeffs.found("kernel")
+      ? checkedEntry::choice<riser::HistoryKernelLaw>
+        (
+            coeffs, "kernel",
+            {{"classical", riser::HistoryKernelLaw::classical},
+             {"meiAdrian", riser::HistoryKernelLaw::meiAdrian}}
+        )
+      : riser::HistoryKernelLaw::classical;
+    if (law == riser::HistoryKernelLaw::meiAdrian)
+    {
+        // the finite-Re kernel is the classical coefficient's, its tail
+        // fitted to it
+        if (coeffs.get<word>("coefficient") != "classical")
+        {
+            FatalIOErrorInFunction(coeffs)
+                << typeName << ": entry 'coefficient' = "
+                << coeffs.get<word>("coefficient") << " with 'kernel meiAdrian':"
+                << " the finite-Re kernel holds its own Re dependence on the"
+                << " classical coefficient C_H = 6. Use 'coefficient classical;'"
+                << " with it, or 'kernel classical;'." << exit(FatalIOError);
+        }
+        if (coeffs.found("tail"))
+        {
+            FatalIOErrorInFunction(coeffs)
+                << typeName << ": entry 'tail' with 'kernel meiAdrian': the"
+                << " tail's constants belong to the classical kernel; the"
+                << " finite-Re kernel's tail is fitted to it at each Re."
+                << " Remove 'tail'." << exit(FatalIOError);
+        }
+    }
     const riser::HistoryMethod method =
         coeffs.found("method")
       ? checkedEntry::choice<riser::HistoryMethod>
@@ -51,7 +85,7 @@ riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
             );
         window = label(std::lround(windowTime/deltaT));
     }
-    return riser::HistoryKernel(method, deltaT, window, tail);
+    return riser::HistoryKernel(method, deltaT, window, tail, law);
 }
 
 
@@ -201,6 +235,25 @@ Foam::scalar Foam::RiserBassetForce<CloudType>::historyCoefficient
 
 
 template<class CloudType>
+Foam::scalar Foam::RiserBassetForce<CloudType>::ageScale
+(
+    const typename CloudType::parcelType& p,
+    const vector& Uc,
+    const scalar rhoc,
+    const scalar muc
+) const
+{
+    if (kernel_.law() == riser::HistoryKernelLaw::classical)
+    {
+        return HUGE_VAL;
+    }
+    const scalar d = p.d();
+    const scalar Re = rhoc*d*mag(carrier_.velocity(p, Uc) - p.U())/muc;
+    return riser::meiAdrianAgeScale(Re, d*d*rhoc/muc);
+}
+
+
+template<class CloudType>
 Foam::scalar Foam::RiserBassetForce<CloudType>::strouhalFactor
 (
     const scalar muc,
@@ -320,8 +373,17 @@ void Foam::RiserBassetForce<CloudType>::startStep()
             << exit(FatalError);
     }
 
-    // the next particle's history is fetched while this one's is summed
+    // the finite-Re kernel's s* from each particle's slip now: the carrier
+    // at the particles (a tracking data, its interpolations a pass over the
+    // mesh)
     CloudType& cloud = this->owner();
+    autoPtr<typename CloudType::parcelType::trackingData> td;
+    if (kernel_.law() == riser::HistoryKernelLaw::meiAdrian)
+    {
+        td.reset(new typename CloudType::parcelType::trackingData(cloud));
+    }
+
+    // the next particle's history is fetched while this one's is summed
     for (auto iter = cloud.begin(); iter != cloud.end(); )
     {
         auto& p = *iter;
@@ -331,7 +393,13 @@ void Foam::RiserBassetForce<CloudType>::startStep()
         }
         if (p.historyStarted())
         {
-            p.historyKnown() = kernel_.knownPart(p.history());
+            scalar sStar = HUGE_VAL;
+            if (td.valid())
+            {
+                p.setCellValues(cloud, *td);
+                sStar = ageScale(p, td->Uc(), td->rhoc(), td->muc());
+            }
+            p.historyKnown() = kernel_.knownPart(p.history(), sStar);
         }
     }
 }
@@ -412,7 +480,10 @@ Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
         (
             KH*
             (
-                kernel_.firstKnownPart(p.history().slip0)
+                kernel_.firstKnownPart
+                (
+                    p.history().slip0, ageScale(p, td.Uc(), td.rhoc(), td.muc())
+                )
               + kernel_.firstWeight()*carrier_.materialDerivative(p, dt)
             ),
             0
@@ -424,7 +495,9 @@ Foam::forceSuSp Foam::RiserBassetForce<CloudType>::calcCoupled
         // (none for a history that starts now)
         return forceSuSp
         (
-            p.history().steps > 0 ? KH*kernel_.value(p.history()) : vector(Zero),
+            p.history().steps > 0
+          ? KH*kernel_.value(p.history(), ageScale(p, td.Uc(), td.rhoc(), td.muc()))
+          : vector(Zero),
             0
         );
     }
