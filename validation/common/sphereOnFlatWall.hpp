@@ -182,11 +182,18 @@ struct Run
     double t0() const { return contacts.at(0).tTouch; }
 };
 
+//- The history force through a contact: kept (the unbounded kernel over
+//  the contact's reversal), or started anew as the sphere leaves the wall,
+//  with its slip then as the initial slip (restart: an impulsively started
+//  boundary layer) or without it (forget)
+enum class HistoryAtContact { keep, restart, forget };
+
 //- Release from rest, follow the sphere to tAfter past the first contact,
 //  or to tEnd after release, whichever comes first
 inline Run bounce(const Scene& s, bool basset, double h, double windowTime, double tAfter,
                   long outputEvery, Wetness wet = Wetness::dry, double tEnd = HUGE_VAL,
-                  HistoryKernelLaw kernel = HistoryKernelLaw::classical)
+                  HistoryKernelLaw kernel = HistoryKernelLaw::classical,
+                  HistoryAtContact atContact = HistoryAtContact::keep)
 {
     SphereOnFlatWall law(s, basset, true, wet);
     law.place(0.0, s.releaseGap + s.R(), 0.0);
@@ -222,6 +229,10 @@ inline Run bounce(const Scene& s, bool basset, double h, double windowTime, doub
                 r.contacts.back().tLeave = tc;
                 r.contacts.back().vLeave = v;
                 r.apexes.push_back({t, gap});
+                if (atContact != HistoryAtContact::keep)
+                {
+                    stepper.restartHistory(atContact == HistoryAtContact::restart);
+                }
             }
         }
         if (flying && !r.apexes.empty() && gap > r.apexes.back().gap) r.apexes.back() = {t, gap};

@@ -175,7 +175,7 @@ public:
                   HistoryTail tail = HistoryTail::vanHinsberg2011,
                   HistoryKernelLaw law = HistoryKernelLaw::classical)
     :
-        method_(method), law_(law), h_(h), sqrtH_(std::sqrt(h)), N_(window)
+        method_(method), law_(law), tail_(tail), h_(h), sqrtH_(std::sqrt(h)), N_(window)
     {
         requirePositive("riser::HistoryKernel", "h", h);
         if (windowed())
@@ -211,6 +211,7 @@ public:
     long window() const { return N_; }
     bool windowed() const { return method_ == HistoryMethod::windowTail; }
     HistoryKernelLaw law() const { return law_; }
+    HistoryTail tail() const { return tail_; }
 
     //- A new history: initial slip w0 (zero: no initial-slip term) and
     //  g0 = dw/dt at t = 0+
@@ -483,6 +484,7 @@ private:
 
     HistoryMethod method_;
     HistoryKernelLaw law_;
+    HistoryTail tail_;
     double h_;
     double sqrtH_;
     long N_;
@@ -510,6 +512,9 @@ public:
 
     long stored() const { return kernel_.stored(state_); }
     HistoryKernelLaw law() const { return kernel_.law(); }
+    HistoryMethod method() const { return kernel_.method(); }
+    long window() const { return kernel_.window(); }
+    HistoryTail tail() const { return kernel_.tail(); }
     //- ageScale: s* of the finite-Re kernel (unused by the classical)
     Value value(double ageScale = HUGE_VAL) const { return kernel_.value(state_, ageScale); }
     double newestWeight() const { return kernel_.newestWeight(); }

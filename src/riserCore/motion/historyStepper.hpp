@@ -108,6 +108,19 @@ public:
         }
     }
 
+    //- Start the history anew at the current time: with the current slip
+    //  as its initial slip (initialSlip), or with none, and the current
+    //  rate of change of the slip as its first value
+    void restartHistory(bool initialSlip)
+    {
+        const Value w = sys_.carrierVelocity(t_) - v_;
+        history_ = HistoryIntegral<Value>
+        (
+            history_.method(), h_, history_.window(), initialSlip ? w : Value(w*0.0),
+            sys_.carrierAcceleration(t_) - a_, history_.tail(), history_.law()
+        );
+    }
+
     double time() const { return t_; }
     const Value& velocity() const { return v_; }
     const Value& acceleration() const { return a_; }
