@@ -14,8 +14,8 @@ SPDX-License-Identifier: GPL-3.0-or-later
 import os
 import sys
 
-from paraview.simple import (ExtractBlock, GetActiveViewOrCreate, GetColorTransferFunction,
-                             GetScalarBar, Glyph, OpenFOAMReader, Render, SaveScreenshot, Show)
+from paraview.simple import ExtractBlock, Glyph, OpenFOAMReader, Render, SaveScreenshot
+from riserfoam.pvscene import coloured, faint_wall, white_view
 
 foam, cloud, field, when, png = sys.argv[1:6]
 reader = OpenFOAMReader(FileName=foam)
@@ -49,26 +49,9 @@ spheres.ScaleFactor = 1.0       # after the array: ParaView sets its own on it
 spheres.GlyphType.ThetaResolution = 16
 spheres.GlyphType.PhiResolution = 12
 
-view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = [900, 1200]
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
-shownWall = Show(wall, view)
-shownWall.Opacity = 0.15
-shownWall.DiffuseColor = shownWall.AmbientColor = [0.35, 0.45, 0.6]
-shownWall.ColorArrayName = ["POINTS", ""]
-shown = Show(spheres, view)
-shown.ColorArrayName = ["POINTS", field]
-lut = GetColorTransferFunction(field)
-lut.ApplyPreset("Viridis (matplotlib)", True)
-shown.LookupTable = lut
-shown.SetScalarBarVisibility(view, True)
-bar = GetScalarBar(lut, view)
-bar.Title = field
-bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+view = white_view(900, 1200)
+faint_wall(wall, view)
+lut = coloured(spheres, view, field, field)
 
 reader.UpdatePipeline(times[-1])
 x0, x1, y0, y1, z0, z1 = wall.GetDataInformation().GetBounds()

@@ -13,10 +13,10 @@ help_requested(__doc__)
 
 import sys
 
-from paraview.simple import (Calculator, GetActiveViewOrCreate, GetColorTransferFunction,
-                             GetScalarBar, OpenFOAMReader, PolyLineSource, Render,
-                             SaveScreenshot, Show, Transform, Tube)
+from paraview.simple import (Calculator, OpenFOAMReader, PolyLineSource, Render, SaveScreenshot,
+                             Transform, Tube)
 from riserfoam import tables
+from riserfoam.pvscene import coloured, faint_wall, white_view
 
 foam, table, png = sys.argv[1:4]
 
@@ -34,13 +34,7 @@ line = PolyLineSource(Points=points)
 height = Calculator(Input=line, ResultArrayName="height", Function="coordsZ")
 tube = Tube(Input=height, Radius=0.002, NumberofSides=12)
 
-view = GetActiveViewOrCreate("RenderView")
-view.ViewSize = [900, 1400]
-view.Background = [1, 1, 1]
-try:
-    view.UseColorPaletteForBackground = 0
-except AttributeError:
-    pass
+view = white_view(900, 1400)
 view.OrientationAxesVisibility = 1
 
 # the wall: the case's wall patch, one copy per slice length over the rise
@@ -54,25 +48,8 @@ copies = int((top - zmin) // length) + 1
 for k in range(copies):
     piece = Transform(Input=reader)
     piece.Transform.Translate = [0.0, 0.0, k * length]
-    shown = Show(piece, view)
-    shown.Opacity = 0.15
-    shown.DiffuseColor = [0.35, 0.45, 0.6]
-    shown.AmbientColor = [0.35, 0.45, 0.6]
-    try:
-        shown.ColorArrayName = ["POINTS", ""]
-    except Exception:
-        pass
-
-shownTrack = Show(tube, view)
-shownTrack.ColorArrayName = ["POINTS", "height"]
-lut = GetColorTransferFunction("height")
-lut.ApplyPreset("Viridis (matplotlib)", True)
-shownTrack.LookupTable = lut
-shownTrack.SetScalarBarVisibility(view, True)
-bar = GetScalarBar(lut, view)
-bar.Title = "height [m]"
-bar.ComponentTitle = ""
-bar.TitleColor = bar.LabelColor = [0.0, 0.0, 0.0]
+    faint_wall(piece, view)
+coloured(tube, view, "height", "height [m]")
 
 view.CameraPosition = [0.9 * (top - zmin + 0.3), -0.9 * (top - zmin + 0.3), 0.5 * (zmin + top)]
 view.CameraFocalPoint = [0.0, 0.0, 0.5 * (zmin + top)]
