@@ -124,7 +124,7 @@ TEST(MeiAdrianKernel, TailFitsTheFactorAtEveryRatio)
 // Full history with the factor: order 5/4 against the reference
 // quadrature (g = cos t, w(0) = 0, t = 10, s* = 0.7: the kernel decays
 // as s^-2 over most of the history).
-TEST(MeiAdrianKernel, FullHistoryConvergesAtSecondOrder)
+TEST(MeiAdrianKernel, FullHistoryConvergesAtOrderFiveQuarters)
 {
     const double t = 10.0, sStar = 0.7;
     const double exact = referenceHistory([](double tau) { return std::cos(tau); }, t, sStar);
