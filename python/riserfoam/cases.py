@@ -647,9 +647,10 @@ def fill_injection(cv, d=None, seed=1, sizes=None):
 
 
 def single_release(d, velocity=(0.0, 0.0, 0.0)):
-    """The injector 'release' of a coupled_pipe_case, as text: one particle
-    of diameter d at each position of constant/kinematicCloudPositions, at
-    the start, with the velocity velocity"""
+    """The injector 'release' of a cloud's injectionModels, as text: one
+    particle of diameter d at each position of
+    constant/kinematicCloudPositions, at the start, with the velocity
+    velocity"""
     return """
         release
         {

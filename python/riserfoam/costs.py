@@ -13,6 +13,25 @@ import shutil
 import statistics
 
 from riserfoam import cases
+from riserfoam import foamfields as ff
+
+
+def ore_transport_section(case, end):
+    """the scene of the cloud cost benchmarks that vary a model of the
+    tutorial oreTransport: its ores (about 10 mm, wall and pair contacts,
+    riser frame, exact carrier, 0.1 m at 3 Hz) in a 1 m periodic section of
+    D = 0.1 m filled at C_v = 0.01 (149 ores), no cloud functions, run to
+    the end time end [s] and written there; the case's cloud properties
+    file is returned for the benchmark's own edits"""
+    cases.copy_tutorial("riser/oreTransport", case)
+    cloud = os.path.join(case, "constant/kinematicCloudProperties")
+    ff.set_nested(cloud, "subModels/injectionModels/ores/solidsFraction", "0.01")
+    ff.set_nested(cloud, "cloudFunctions", "{}")
+    control = os.path.join(case, "system/controlDict")
+    ff.set_entry(control, "endTime", repr(end))
+    ff.set_entry(control, "writeInterval", repr(end))
+    cases.riser_mesh(case, 0.1, 1.0, 8, ends="cyclic")
+    return cloud
 
 
 def run(case):

@@ -21,7 +21,7 @@ from riserfoam.cli import help_requested  # noqa: E402
 
 help_requested(__doc__)
 
-from riserfoam import cases, costs, foamfields as ff, pipeflow
+from riserfoam import costs, foamfields as ff, pipeflow
 
 work = os.path.abspath(sys.argv[1])
 END = float(sys.argv[2]) if len(sys.argv) > 2 else 0.3
@@ -48,20 +48,13 @@ def write_profile(case):
 
 def make(name):
     case = os.path.join(work, name)
-    cases.copy_tutorial("riser/oreTransport", case)
+    cloud = costs.ore_transport_section(case, END)
     riser = os.path.join(case, "constant/riserProperties")
     ff.remove_entry(riser, "uCentre")
     with open(riser, "a") as out:
         out.write(CARRIERS[name] + "\n")
-    cloud = os.path.join(case, "constant/kinematicCloudProperties")
-    ff.set_nested(cloud, "subModels/injectionModels/ores/solidsFraction", "0.01")
-    ff.set_nested(cloud, "cloudFunctions", "{}")
     if name == "dispersed":
         ff.set_nested(cloud, "subModels/dispersionModel", "langevinDispersionRAS")
-    control = os.path.join(case, "system/controlDict")
-    ff.set_entry(control, "endTime", repr(END))
-    ff.set_entry(control, "writeInterval", repr(END))
-    cases.riser_mesh(case, D, 1.0, 8, ends="cyclic")
     if name in ("tabulated", "dispersed"):
         write_profile(case)
     return case

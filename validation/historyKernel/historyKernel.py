@@ -66,15 +66,7 @@ def cost_runs():
     folders = {}
     for kernel in KERNELS:
         case = os.path.join(work, "cost_" + kernel)
-        cases.copy_tutorial("riser/oreTransport", case)
-        cloud = os.path.join(case, "constant/kinematicCloudProperties")
-        ff.set_nested(cloud, BASSET, KERNELS[kernel])
-        ff.set_nested(cloud, "subModels/injectionModels/ores/solidsFraction", "0.01")
-        ff.set_nested(cloud, "cloudFunctions", "{}")
-        control = os.path.join(case, "system/controlDict")
-        ff.set_entry(control, "endTime", "0.3")
-        ff.set_entry(control, "writeInterval", "0.3")
-        cases.riser_mesh(case, 0.1, 1.0, 8, ends="cyclic")
+        ff.set_nested(costs.ore_transport_section(case, 0.3), BASSET, KERNELS[kernel])
         folders[kernel] = case
     ratios, parcels = costs.rounds(folders, "classical", ROUNDS)
     costs.write("results/cost.dat",

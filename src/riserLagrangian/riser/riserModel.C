@@ -72,21 +72,17 @@ Foam::riserModel::riserModel(const polyMesh& mesh)
         dict_ = readProperties(mesh_.time())();
         lab_.reset(new riser::RiserFlow(read(dict_)));
         noteLaminarCarrier(dict_, *lab_);
-        if (dict_.found("frame"))
-        {
-            frame_ = checkedEntry::choice<simulationFrame>
-            (
-                dict_, "frame",
-                {{"lab", simulationFrame::lab}, {"riser", simulationFrame::riser}}
-            );
-        }
-        if (dict_.found("carrier"))
-        {
-            exactCarrier_ = checkedEntry::choice<bool>
-            (
-                dict_, "carrier", {{"exact", true}, {"interpolated", false}}
-            );
-        }
+        frame_ = checkedEntry::choiceOrDefault
+        (
+            dict_, "frame",
+            {{"lab", simulationFrame::lab}, {"riser", simulationFrame::riser}},
+            frame_
+        );
+        exactCarrier_ = checkedEntry::choiceOrDefault
+        (
+            dict_, "carrier", {{"exact", true}, {"interpolated", false}},
+            exactCarrier_
+        );
         flow_.reset
         (
             frame_ == simulationFrame::lab
@@ -485,16 +481,15 @@ riser::MotionPtr readModes(const dictionary& m)
         m, "length", 0, false, 1e6, true
     );
     const riser::ModesMotion::Wave wave =
-        m.found("wave")
-      ? checkedEntry::choice<riser::ModesMotion::Wave>
+        checkedEntry::choiceOrDefault
         (
             m, "wave",
             {
                 {"standing", riser::ModesMotion::Wave::standing},
                 {"travelling", riser::ModesMotion::Wave::travelling}
-            }
-        )
-      : riser::ModesMotion::Wave::standing;
+            },
+            riser::ModesMotion::Wave::standing
+        );
     const riser::MotionPtr motion = riser::ModesMotion::make
     (
         foot, length, wave, readModeList(m, "x"), readModeList(m, "y")
@@ -896,17 +891,16 @@ riser::RiserFlow Foam::riserModel::read(const dictionary& dict)
         dimensionedInRange(dict, "D", dimLength, 0, false, maxDiameter, true);
     enum class profileType { laminar, turbulent, tabulated };
     const profileType profile =
-        dict.found("profile")
-      ? checkedEntry::choice<profileType>
+        checkedEntry::choiceOrDefault
         (
             dict, "profile",
             {
                 {"laminar", profileType::laminar},
                 {"turbulent", profileType::turbulent},
                 {"tabulated", profileType::tabulated}
-            }
-        )
-      : profileType::laminar;
+            },
+            profileType::laminar
+        );
     // each profile's own entries, and none of another's
     const std::pair<const char*, profileType> owners[] =
     {

@@ -45,13 +45,7 @@ subModels
 {
     particleForces { wallCorrectedDrag { law paper; pipeDiameter %r; } }
     injectionModels
-    {
-        tracers
-        {
-            type manualInjection; massTotal 0; parcelBasisType fixed; nParticle 1;
-            SOI 0; positionsFile "kinematicCloudPositions"; U0 (0 0 0);
-            sizeDistribution { type fixedValue; fixedValueDistribution { value 2e-5; } }
-        }
+    {%s
     }
     dispersionModel %s;
     patchInteractionModel standardWallInteraction;
@@ -61,7 +55,7 @@ subModels
     collisionModel none;
 }
 cloudFunctions {}
-""" % (D, dispersion))
+""" % (D, cases.single_release(2e-5), dispersion))
     control = os.path.join(case, "system/controlDict")
     for key, value in (("endTime", 10 * TL), ("deltaT", TL / 50), ("writeControl", "adjustableRunTime"),
                        ("writeInterval", TL), ("writePrecision", 12)):

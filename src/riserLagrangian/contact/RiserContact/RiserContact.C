@@ -177,10 +177,10 @@ Foam::RiserContact<CloudType>::RiserContact
     ),
     aloneMeshFree_
     (
-        this->coeffDict().found("aloneAtWall")
-     && checkedEntry::choice<bool>
+        checkedEntry::choiceOrDefault
         (
-            this->coeffDict(), "aloneAtWall", {{"tracked", false}, {"meshFree", true}}
+            this->coeffDict(), "aloneAtWall",
+            {{"tracked", false}, {"meshFree", true}}, false
         )
     ),
     addedMassCoeff_(readAddedMassCoeff()),

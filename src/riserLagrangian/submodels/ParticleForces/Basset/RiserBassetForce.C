@@ -23,15 +23,13 @@ riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
     (
         coeffs, {"coefficient", "kernel", "method", "tail", "windowTime"}
     );
-    const riser::HistoryKernelLaw law =
-        coeffs.found("kernel")
-      ? checkedEntry::choice<riser::HistoryKernelLaw>
-        (
-            coeffs, "kernel",
-            {{"classical", riser::HistoryKernelLaw::classical},
-             {"meiAdrian", riser::HistoryKernelLaw::meiAdrian}}
-        )
-      : riser::HistoryKernelLaw::classical;
+    const riser::HistoryKernelLaw law = checkedEntry::choiceOrDefault
+    (
+        coeffs, "kernel",
+        {{"classical", riser::HistoryKernelLaw::classical},
+         {"meiAdrian", riser::HistoryKernelLaw::meiAdrian}},
+        riser::HistoryKernelLaw::classical
+    );
     if (law == riser::HistoryKernelLaw::meiAdrian)
     {
         // the finite-Re kernel is the classical coefficient's, its tail
@@ -55,24 +53,22 @@ riser::HistoryKernel Foam::RiserBassetForce<CloudType>::readKernel
         }
     }
     const riser::HistoryMethod method =
-        coeffs.found("method")
-      ? checkedEntry::choice<riser::HistoryMethod>
+        checkedEntry::choiceOrDefault
         (
             coeffs, "method",
             {{"windowTail", riser::HistoryMethod::windowTail},
-             {"fullHistory", riser::HistoryMethod::fullHistory}}
-        )
-      : riser::HistoryMethod::windowTail;
+             {"fullHistory", riser::HistoryMethod::fullHistory}},
+            riser::HistoryMethod::windowTail
+        );
 
     const riser::HistoryTail tail =
-        coeffs.found("tail")
-      ? checkedEntry::choice<riser::HistoryTail>
+        checkedEntry::choiceOrDefault
         (
             coeffs, "tail",
             {{"vanHinsberg2011", riser::HistoryTail::vanHinsberg2011},
-             {"leastSquares", riser::HistoryTail::leastSquares}}
-        )
-      : riser::HistoryTail::vanHinsberg2011;
+             {"leastSquares", riser::HistoryTail::leastSquares}},
+            riser::HistoryTail::vanHinsberg2011
+        );
 
     label window = 0;
     if (method == riser::HistoryMethod::windowTail)
