@@ -52,7 +52,8 @@ def oscillating(name, frame, steps, amplitude=A):
     case = os.path.abspath(name)
     dt = T / steps
     cases.coupled_pipe_case(case, N, 4, D=D, nu=NU, rho=RHO, uCentre=2 * UB, A=amplitude,
-                            f=F, frame=frame, dt=dt, end=T, write_every=steps // 4)
+                            f=F, frame=frame, dt=dt, end=T, write_every=steps // 4,
+                            tolerances=cases.ROUND_OFF_SOLVES)
     shutil.rmtree(os.path.join(case, "0"))
     shutil.copytree(os.path.join(rest, "2000"), os.path.join(case, "0"))
     os.remove(os.path.join(case, "0", "phi"))

@@ -65,7 +65,7 @@ def make(frame):
         dt=DT, end=END, U0="poiseuille", coupled=True,
         injection=cases.single_release(0.01, (0.0, 0.0, 0.68)), forces=FORCES,
         kernel="type diffusion; width 3; widthUnit diameters;",
-        cloud_functions="table { type riserParticleTable; }")
+        cloud_functions="table { type riserParticleTable; }", tolerances=cases.ROUND_OFF_SOLVES)
     foamfields.edit(os.path.join(case, "constant/kinematicCloudProperties"),
                     r"rho0 2000;", "rho0 %r;" % RHO)
     foamfields.write_dictionary(os.path.join(case, "constant/kinematicCloudPositions"),

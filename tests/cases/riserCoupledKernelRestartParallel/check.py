@@ -73,7 +73,8 @@ def make(name, laminar=False):
     cases.coupled_pipe_case(case, 6, 6, uCentre=1.25 * UB, drive="bulkVelocity %r; relaxation 0.5;" % UB,
                             dt=5e-3, end=END, write_every=20, injection=ORES, coupled=True,
                             kernel="type diffusion; width 5; widthUnit diameters;%s"
-                            % (" tolerance 1e-14;" if laminar else ""))
+                            % (" tolerance 1e-14;" if laminar else ""),
+                            tolerances=cases.ROUND_OFF_SOLVES)
     if not laminar:
         cases.coupled_pipe_RAS(case, UB)
     foamfields.set_entry(os.path.join(case, "system/controlDict"), "writePrecision", "17")
