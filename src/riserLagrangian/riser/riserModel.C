@@ -993,7 +993,7 @@ void Foam::riserModel::requireRiser() const
         FatalErrorInFunction
             << "no riser: constant/riserProperties is missing (the riser's"
             << " diameter D, centre-line speed uCentre, motion A, f and"
-            << " frame; see the user guide)" << exit(FatalError);
+            << " frame; see doc/reference.md)" << exit(FatalError);
     }
 }
 

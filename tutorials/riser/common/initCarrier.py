@@ -12,7 +12,10 @@ drive's gradient of that flow in 0/uniform/riserDrive
 powerLaw: the 1/7 power law of a turbulent pipe flow
 (riserfoam.pipeflow.power_law) at the drive's bulkVelocity (default
 uCentre/2), at the cell centres that `postProcess -func writeCellCentres
--time 0` writes to 0/C. The wall is noSlip, the ends cyclic (a periodic
+-time 0` writes to 0/C; and where the case has 0/k and 0/omega, their
+uniform start and wall values from that bulk velocity and D
+(riserfoam.pipeflow.turbulence_estimates: intensity 5 %, length 0.07 D), so
+that D and the bulk velocity are given in riserProperties alone. The wall is noSlip, the ends cyclic (a periodic
 riser section from bin/riserMesh -ends cyclic), the riser frame; the
 Poiseuille profile also in the lab frame (riserProperties' frame lab: the
 flow moves with the riser, its wall is movingWallVelocity).
@@ -59,6 +62,14 @@ def main():
         lambda x, y, z: (0.0, 0.0, axial(riser.axis_distance(x, y))), precision=12,
         note="the %s profile relative to the riser, written by initCarrier.py" % profile)
     print("initCarrier: 0/U, the %s profile at %d cell centres" % (profile, len(centres)))
+    if profile == "powerLaw":
+        k, omega, _ = pipeflow.turbulence_estimates(ub, riser.D)
+        for name, value in (("k", k), ("omega", omega)):
+            path = os.path.join("0", name)
+            if os.path.exists(path):
+                for entry in ("internalField", "boundaryField/riserWall/value"):
+                    ff.set_nested(path, entry, "uniform %.6g" % value)
+                print("initCarrier: 0/%s, uniform %.6g" % (name, value))
 
 
 main()
