@@ -51,6 +51,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
@@ -224,6 +225,9 @@ public:
         const double h = outputInterval/perRow;
         double t = t0;
         long k = 0, nextRow = perRow;
+        // the approach speed of the last contact: the rows report a state
+        // left overlapping by a contact at frozen position with its force
+        double lastApproach = s.approachSpeed;
         if (obs.row) obs.row(t, s);
         while (t < tEnd - 0.5*h)
         {
@@ -232,6 +236,7 @@ public:
             detail::requireSane(law, t, y);
             s = ParticleSystem::unpack(y);
             s.spring.setZero();
+            s.approachSpeed = lastApproach;
             ++stats.steps;
             if (law.hasContact())
             {
@@ -239,7 +244,8 @@ public:
                 const double approach = (s.v - c.velocity).dot(c.normal);
                 if (c.overlap > -eps_*law.diameter() && approach > 0.0)
                 {
-                    t = contact(law, t, s, obs, stats);
+                    t = contact(law, t, tEnd, s, obs, stats);
+                    lastApproach = s.approachSpeed;
                     // back on the flow grid
                     k = std::lround(std::ceil((t - t0)/h - 1e-9));
                     const double tGrid = t0 + k*h;
@@ -247,6 +253,7 @@ public:
                     {
                         s = ParticleSystem::unpack(flowStep(t, s, tGrid - t));
                         s.spring.setZero();
+                        s.approachSpeed = lastApproach;
                         t = tGrid;
                     }
                 }
@@ -269,9 +276,11 @@ private:
     public:
         using State = Eigen::Matrix<double, 7, 1>;
 
-        ContactPhase(const RiserParticleLaw& law, const Vector& x, const Vector& n)
+        //- at x, normal n, the contact's approach speed vIn
+        ContactPhase(const RiserParticleLaw& law, const Vector& x, const Vector& n,
+                     double vIn)
         :
-            law_(law), x_(x), n_(n)
+            law_(law), x_(x), n_(n), vIn_(vIn)
         {}
 
         ContactPoint contactPoint(double t, double dn) const
@@ -279,14 +288,14 @@ private:
             return ContactPoint{dn, n_, law_.wall().velocity(x_, t)};
         }
 
-        static ParticleState particle(const Vector& x, const State& z)
+        ParticleState particle(const State& z) const
         {
-            return ParticleState{x, z.segment<3>(0), z.segment<3>(4)};
+            return ParticleState{x_, z.segment<3>(0), z.segment<3>(4), vIn_};
         }
 
         State rate(double t, const State& z) const
         {
-            const ParticleState s = particle(x_, z);
+            const ParticleState s = particle(z);
             const ContactPoint c = contactPoint(t, z(3));
             const Vector a = law_.forces(t, s, c).total()/law_.inertia();
             State dz;
@@ -297,30 +306,34 @@ private:
     private:
         const RiserParticleLaw& law_;
         Vector x_, n_;
+        double vIn_;
     };
 
     //- The contact phase at frozen position: returns the time at its end
-    double contact(const RiserParticleLaw& law, double t, ParticleState& s,
+    //  (or tEnd, with the contact in progress: not reported as completed)
+    double contact(const RiserParticleLaw& law, double t, double tEnd, ParticleState& s,
                    const Observer& obs, IntegratorStats& stats) const
     {
         const Vector x = s.x;
         const ContactPoint c0 = law.wallContact(x, t);
         const Vector n = c0.normal;
-        const ContactPhase phase(law, x, n);
-        const detail::Checked<ContactPhase> system(phase, stats.forceEvaluations);
-        double dn = c0.overlap;
-        if (start_ == ContactStart::detection) dn = std::min(dn, 0.0);
         ContactRecord rec;
         rec.start = t;
         rec.side = n.x() >= 0.0 ? 1 : -1;
         rec.impactSpeed = (s.v - c0.velocity).dot(n);
+        const ContactPhase phase(law, x, n, rec.impactSpeed);
+        const detail::Checked<ContactPhase> system(phase, stats.forceEvaluations);
+        double dn = c0.overlap;
+        if (start_ == ContactStart::detection) dn = std::min(dn, 0.0);
         bool touched = dn > 0.0;
 
         ContactPhase::State z;
         z << s.v, dn, Vector::Zero();
         // a contact never longer than the time to leave the eps band at the
-        // approach speed, or than 1e6 contact steps
-        for (long i = 0; i < 1000000; ++i)
+        // approach speed, or than 1e6 contact steps, or past the run's end
+        // (an ore left at the wall by a restitution of 0)
+        bool ended = false;
+        for (long i = 0; i < 1000000 && t < tEnd - 0.5*hc_; ++i)
         {
             z = rungeKutta4(system, t, z, hc_);
             t += hc_;
@@ -337,18 +350,27 @@ private:
             if (c.overlap > 0.0)
             {
                 touched = true;
-                z.segment<3>(4) =
-                    law.contactLaw().force(law.body(), c.overlap, n, U, z.segment<3>(4)).springAfter;
+                z.segment<3>(4) = law.contactLaw().force
+                (
+                    law.body(), c.overlap, n, U, z.segment<3>(4), rec.impactSpeed
+                ).springAfter;
                 rec.maxOverlap = std::max(rec.maxOverlap, c.overlap);
             }
             const bool leaving = U.dot(n) < 0.0;
-            if ((touched && c.overlap <= 0.0) || (!touched && leaving)) break;
+            if ((touched && c.overlap <= 0.0) || (!touched && leaving))
+            {
+                ended = true;
+                break;
+            }
         }
         s.v = z.segment<3>(0);
         s.spring.setZero();
+        s.approachSpeed = rec.impactSpeed;
         rec.end = t;
         rec.reboundSpeed = -(s.v - law.wall().velocity(x, t)).dot(n);
-        if (touched && obs.contact) obs.contact(rec);
+        // a contact still in progress at the run's end is not complete
+        const bool inProgress = !ended && t >= tEnd - 0.5*hc_;
+        if (touched && !inProgress && obs.contact) obs.contact(rec);
         return t;
     }
 
@@ -381,7 +403,9 @@ public:
         using Y = ParticleSystem::State;
         using Checked = detail::Checked<ParticleSystem>;
         IntegratorStats stats;
-        const ParticleSystem freeLaw(law, false), touchingLaw(law, true);
+        // the touching system holds the approach speed of the contact in
+        // progress (a wet contact's restitution depends on it)
+        ParticleSystem freeLaw(law, false), touchingLaw(law, true);
         const Checked free(freeLaw, stats.forceEvaluations);
         const Checked touching(touchingLaw, stats.forceEvaluations);
         detail::FirstStage<Checked> first;
@@ -400,18 +424,31 @@ public:
         Y y = ParticleSystem::pack(s);
         long row = 0;
         double nextRow = t0;
+        bool inContact = law.hasContact() && law.overlap(s.x, t) > 0.0;
+        bool wasInContact = inContact;
+        double approach = std::numeric_limits<double>::quiet_NaN();
+        if (inContact)
+        {
+            // released in contact: the approach speed given, else the
+            // normal speed at the release (none when leaving)
+            const ContactPoint c = law.wallContact(s.x, t);
+            approach = std::isfinite(s.approachSpeed)
+                     ? s.approachSpeed
+                     : std::max((s.v - c.velocity).dot(c.normal), 0.0);
+            touchingLaw.approachSpeed(approach);
+        }
         auto emitRows = [&]()
         {
             while (obs.row && t >= nextRow - 1e-12*std::max(1.0, std::abs(nextRow)))
             {
-                obs.row(nextRow, ParticleSystem::unpack(y));
+                ParticleState p = ParticleSystem::unpack(y);
+                p.approachSpeed = approach;
+                obs.row(nextRow, p);
                 nextRow = t0 + (++row)*outputInterval;
             }
         };
         emitRows();
 
-        bool inContact = law.hasContact() && law.overlap(s.x, t) > 0.0;
-        bool wasInContact = inContact;
         ContactRecord rec;
         // the first step from the scene's scales, not the output interval
         // (the trajectory must not depend on how often rows are written)
@@ -456,6 +493,7 @@ public:
             {
                 ParticleState p = ParticleSystem::unpack(step.at((nextRow - t)/hTry));
                 // the spring as the law holds it (capped), zero outside
+                p.approachSpeed = approach;
                 p.spring = inContact ? law.cappedSpring(nextRow, p) : Vector::Zero();
                 obs.row(nextRow, p);
                 nextRow = t0 + (++row)*outputInterval;
@@ -478,6 +516,8 @@ public:
                     rec.start = t;
                     rec.side = c.normal.x() >= 0.0 ? 1 : -1;
                     rec.impactSpeed = Un;
+                    approach = Un;
+                    touchingLaw.approachSpeed(approach);
                     p.spring.setZero();
                 }
                 else if (inContact && c.overlap <= 0.0)
@@ -485,12 +525,14 @@ public:
                     inContact = false;
                     rec.end = t;
                     rec.reboundSpeed = -Un;
+                    approach = std::numeric_limits<double>::quiet_NaN();
                     p.spring.setZero();
                     if (obs.contact) obs.contact(rec);
                 }
                 else if (inContact)
                 {
                     rec.maxOverlap = std::max(rec.maxOverlap, c.overlap);
+                    p.approachSpeed = approach;
                     p.spring = law.cappedSpring(t, p);
                 }
                 y = ParticleSystem::pack(p);

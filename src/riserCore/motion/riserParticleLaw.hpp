@@ -17,7 +17,10 @@
 //
 // The contact's tangential spring delta_t is part of the state: it grows
 // with the tangential velocity of the contact point while in contact and is
-// kept in the tangent plane; the Coulomb cap resets it (springAfter).
+// kept in the tangent plane; the Coulomb cap resets it (springAfter). So is,
+// for a wet contact (contact/wetRestitution.hpp), the normal approach speed
+// at the start of the contact in progress, which sets its restitution: the
+// integrators record it at the contact's onset; it is not integrated.
 //
 // ParticleSystem puts the law in the form the integrators step,
 // dy/dt = f(t, y), y = (x, v, delta_t).
@@ -38,16 +41,20 @@
 #include "vector.hpp"
 #include "wall/wall.hpp"
 
+#include <limits>
 #include <optional>
 
 namespace riser {
 
-//- The particle's state: position, velocity, tangential contact spring
+//- The particle's state: position, velocity, tangential contact spring,
+//  and the normal approach speed at the start of the contact in progress
+//  (a wet contact's; NaN outside a contact or unknown)
 struct ParticleState
 {
     Vector x = Vector::Zero();
     Vector v = Vector::Zero();
     Vector spring = Vector::Zero();
+    double approachSpeed = std::numeric_limits<double>::quiet_NaN();
 };
 
 class RiserParticleLaw
@@ -134,7 +141,8 @@ public:
             {
                 const ContactForce cf = contact_->force
                 (
-                    body(), f.overlap, c->normal, s.v - c->velocity, s.spring
+                    body(), f.overlap, c->normal, s.v - c->velocity, s.spring,
+                    s.approachSpeed
                 );
                 f[Force::contact] = cf.normal + cf.tangential;
                 f.sliding = cf.sliding;
@@ -171,7 +179,10 @@ public:
         const ContactPoint c = wallContact(s.x, t);
         if (c.overlap <= 0.0) return Vector::Zero();
         const Vector spring = s.spring - s.spring.dot(c.normal)*c.normal;
-        return contact_->force(body(), c.overlap, c.normal, s.v - c.velocity, spring).springAfter;
+        return contact_->force
+        (
+            body(), c.overlap, c.normal, s.v - c.velocity, spring, s.approachSpeed
+        ).springAfter;
     }
 
 private:
@@ -185,7 +196,9 @@ private:
 
 
 //- The law as the first-order system the integrators step: y = (x, v,
-//  delta_t); with contact off, no contact force and no spring
+//  delta_t); with contact off, no contact force and no spring. The approach
+//  speed of the contact in progress is the system's, set by the integrator
+//  at the contact's onset.
 class ParticleSystem
 {
 public:
@@ -214,9 +227,13 @@ public:
 
     //- dy/dt at (t, y) (the law may throw: its values are computed before
     //  they are put into dy)
+    //- The approach speed of the contact in progress
+    void approachSpeed(double v) { approachSpeed_ = v; }
+
     State rate(double t, const State& y) const
     {
         ParticleState s = unpack(y);
+        s.approachSpeed = approachSpeed_;
         State dy;
         if (!contact_)
         {
@@ -234,6 +251,7 @@ public:
 private:
     const RiserParticleLaw& law_;
     bool contact_;
+    double approachSpeed_ = std::numeric_limits<double>::quiet_NaN();
 };
 
 } // namespace riser

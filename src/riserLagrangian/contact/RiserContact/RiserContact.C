@@ -213,19 +213,11 @@ Foam::RiserContact<CloudType>::RiserContact
     // built on m_p + m_f/2, the inertia the contacts accelerate with C_A 1/2
     if
     (
-        (
-            (wallLaw_.valid() && wallLaw_->wet())
-         || (pairLaw_.valid() && pairLaw_->wet())
-        )
-     && mag(addedMassCoeff_ - 0.5) > SMALL
+        (wallLaw_.valid() && wallLaw_->wet())
+     || (pairLaw_.valid() && pairLaw_->wet())
     )
     {
-        FatalIOErrorInFunction(this->coeffDict())
-            << "entry 'wet' with the added-mass coefficient C_A = "
-            << addedMassCoeff_ << ": its Stokes number is built on the"
-            << " inertia m_p + m_f/2 (Legendre et al. 2006), which the contacts"
-            << " accelerate with riserAddedMass { CA 0.5; } among the particle"
-            << " forces" << exit(FatalIOError);
+        modelEntries::requireWetInertia(this->coeffDict(), addedMassCoeff_);
     }
 
     // the riser must exist: FatalError here rather than at the first step
