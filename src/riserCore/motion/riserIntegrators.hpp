@@ -426,23 +426,24 @@ public:
         double nextRow = t0;
         bool inContact = law.hasContact() && law.overlap(s.x, t) > 0.0;
         bool wasInContact = inContact;
-        double approach = std::numeric_limits<double>::quiet_NaN();
         if (inContact)
         {
             // released in contact: the approach speed given, else the
             // normal speed at the release (none when leaving)
             const ContactPoint c = law.wallContact(s.x, t);
-            approach = std::isfinite(s.approachSpeed)
-                     ? s.approachSpeed
-                     : std::max((s.v - c.velocity).dot(c.normal), 0.0);
-            touchingLaw.approachSpeed(approach);
+            touchingLaw.approachSpeed
+            (
+                std::isfinite(s.approachSpeed)
+              ? s.approachSpeed
+              : std::max((s.v - c.velocity).dot(c.normal), 0.0)
+            );
         }
         auto emitRows = [&]()
         {
             while (obs.row && t >= nextRow - 1e-12*std::max(1.0, std::abs(nextRow)))
             {
                 ParticleState p = ParticleSystem::unpack(y);
-                p.approachSpeed = approach;
+                p.approachSpeed = touchingLaw.approachSpeed();
                 obs.row(nextRow, p);
                 nextRow = t0 + (++row)*outputInterval;
             }
@@ -493,7 +494,7 @@ public:
             {
                 ParticleState p = ParticleSystem::unpack(step.at((nextRow - t)/hTry));
                 // the spring as the law holds it (capped), zero outside
-                p.approachSpeed = approach;
+                p.approachSpeed = touchingLaw.approachSpeed();
                 p.spring = inContact ? law.cappedSpring(nextRow, p) : Vector::Zero();
                 obs.row(nextRow, p);
                 nextRow = t0 + (++row)*outputInterval;
@@ -516,8 +517,7 @@ public:
                     rec.start = t;
                     rec.side = c.normal.x() >= 0.0 ? 1 : -1;
                     rec.impactSpeed = Un;
-                    approach = Un;
-                    touchingLaw.approachSpeed(approach);
+                    touchingLaw.approachSpeed(Un);
                     p.spring.setZero();
                 }
                 else if (inContact && c.overlap <= 0.0)
@@ -525,14 +525,14 @@ public:
                     inContact = false;
                     rec.end = t;
                     rec.reboundSpeed = -Un;
-                    approach = std::numeric_limits<double>::quiet_NaN();
+                    touchingLaw.approachSpeed(std::numeric_limits<double>::quiet_NaN());
                     p.spring.setZero();
                     if (obs.contact) obs.contact(rec);
                 }
                 else if (inContact)
                 {
                     rec.maxOverlap = std::max(rec.maxOverlap, c.overlap);
-                    p.approachSpeed = approach;
+                    p.approachSpeed = touchingLaw.approachSpeed();
                     p.spring = law.cappedSpring(t, p);
                 }
                 y = ParticleSystem::pack(p);

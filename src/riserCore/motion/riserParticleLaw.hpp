@@ -225,11 +225,12 @@ public:
         return s;
     }
 
-    //- dy/dt at (t, y) (the law may throw: its values are computed before
-    //  they are put into dy)
-    //- The approach speed of the contact in progress
+    //- The approach speed of the contact in progress (NaN: none)
+    double approachSpeed() const { return approachSpeed_; }
     void approachSpeed(double v) { approachSpeed_ = v; }
 
+    //- dy/dt at (t, y) (the law may throw: its values are computed before
+    //  they are put into dy)
     State rate(double t, const State& y) const
     {
         ParticleState s = unpack(y);

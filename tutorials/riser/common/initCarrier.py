@@ -15,8 +15,9 @@ uCentre/2), at the cell centres that `postProcess -func writeCellCentres
 -time 0` writes to 0/C; and where the case has 0/k and 0/omega, their
 uniform start and wall values from that bulk velocity and D
 (riserfoam.pipeflow.turbulence_estimates: intensity 5 %, length 0.07 D), so
-that D and the bulk velocity are given in riserProperties alone. The wall is noSlip, the ends cyclic (a periodic
-riser section from bin/riserMesh -ends cyclic), the riser frame; the
+that D and the bulk velocity are given in riserProperties alone. The wall
+is noSlip, the ends cyclic (a periodic riser section from bin/riserMesh
+-ends cyclic), the riser frame; the
 Poiseuille profile also in the lab frame (riserProperties' frame lab: the
 flow moves with the riser, its wall is movingWallVelocity).
 """
